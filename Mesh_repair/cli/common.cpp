@@ -1,0 +1,225 @@
+// Copyright (c) 2026 Mesh_repair developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "common.h"
+
+#include <CGAL/Mesh_repair/io.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
+
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <unistd.h>
+
+namespace mesh_repair_cli {
+
+Arguments::Arguments(const std::vector<std::string>& args, const std::set<std::string>& flags,
+                     const std::set<std::string>& valued) {
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (a.size() > 1 && a[0] == '-' && !(a.size() > 1 && (std::isdigit(a[1]) || a[1] == '.'))) {
+      std::string name = a, inline_value;
+      const std::size_t eq = a.find('=');
+      const bool has_inline = eq != std::string::npos;
+      if (has_inline) {
+        name = a.substr(0, eq);
+        inline_value = a.substr(eq + 1);
+      }
+      if (flags.count(name) && !has_inline) {
+        flags_.insert(name);
+      } else if (valued.count(name)) {
+        if (has_inline) {
+          values_[name].push_back(inline_value);
+        } else {
+          if (i + 1 >= args.size()) throw Input_error("option " + name + " needs a value");
+          values_[name].push_back(args[++i]);
+        }
+      } else {
+        throw Input_error("unknown option " + name + " (see --help)");
+      }
+    } else {
+      positional_.push_back(a);
+    }
+  }
+}
+
+bool Arguments::has(const std::string& name) const {
+  return flags_.count(name) > 0 || values_.count(name) > 0;
+}
+
+std::string Arguments::get(const std::string& name, const std::string& fallback) const {
+  auto it = values_.find(name);
+  return it == values_.end() ? fallback : it->second.back();
+}
+
+std::vector<std::string> Arguments::get_all(const std::string& name) const {
+  auto it = values_.find(name);
+  return it == values_.end() ? std::vector<std::string>() : it->second;
+}
+
+double Arguments::get_double(const std::string& name, double fallback) const {
+  return has(name) ? parse_double(get(name), name) : fallback;
+}
+
+long long Arguments::get_int(const std::string& name, long long fallback) const {
+  return has(name) ? parse_int(get(name), name) : fallback;
+}
+
+std::string Arguments::single_input(const std::string& usage) const {
+  if (positional_.size() != 1) throw Input_error("expected one input file; usage: " + usage);
+  return positional_.front();
+}
+
+double parse_double(const std::string& text, const std::string& option) {
+  try {
+    std::size_t used = 0;
+    const double v = std::stod(text, &used);
+    if (used == text.size() && std::isfinite(v)) return v;
+  } catch (const std::exception&) {
+  }
+  throw Input_error("option " + option + " expects a number, got '" + text + "'");
+}
+
+long long parse_int(const std::string& text, const std::string& option) {
+  try {
+    std::size_t used = 0;
+    const long long v = std::stoll(text, &used);
+    if (used == text.size()) return v;
+  } catch (const std::exception&) {
+  }
+  throw Input_error("option " + option + " expects an integer, got '" + text + "'");
+}
+
+void load_mesh(const std::string& path, Mesh& mesh, CGAL::Mesh_repair::Soup_repair_report& report) {
+  const std::string error = CGAL::Mesh_repair::read_mesh(path, mesh, report);
+  if (!error.empty()) throw Input_error(error);
+}
+
+void save_mesh(const std::string& path, const Mesh& mesh, bool binary) {
+  const std::string error = CGAL::Mesh_repair::write_mesh(path, mesh, binary);
+  if (!error.empty()) throw Input_error(error);
+}
+
+void save_text(const std::string& path, const std::string& text) {
+  const std::string temporary = CGAL::Mesh_repair::internal::temporary_name_for(path);
+  CGAL::Mesh_repair::internal::register_temporary_file(temporary);
+  {
+    std::ofstream out(temporary);
+    out << text;
+    if (!out) {
+      std::remove(temporary.c_str());
+      CGAL::Mesh_repair::internal::register_temporary_file({});
+      throw Input_error(path + ": cannot be written");
+    }
+  }
+  const bool renamed = std::rename(temporary.c_str(), path.c_str()) == 0;
+  if (!renamed) std::remove(temporary.c_str());
+  CGAL::Mesh_repair::internal::register_temporary_file({});
+  if (!renamed) throw Input_error(path + ": cannot be renamed into place");
+}
+
+std::string describe_soup_repair(const CGAL::Mesh_repair::Soup_repair_report& r) {
+  std::ostringstream out;
+  auto line = [&](std::size_t n, const char* what) {
+    if (n > 0) out << "  " << n << ' ' << what << '\n';
+  };
+  line(r.points_merged, "duplicated points merged");
+  line(r.polygons_simplified, "polygons with repeated points simplified");
+  line(r.polygons_split, "pinched polygons split");
+  line(r.degenerate_polygons_removed, "degenerate polygons removed");
+  line(r.duplicated_polygons_removed, "duplicated polygons removed");
+  line(r.isolated_points_removed, "isolated points removed");
+  line(r.non_manifold_edges, "non-manifold edges (split apart)");
+  line(r.non_manifold_vertices, "non-manifold vertices (duplicated)");
+  line(r.vertices_duplicated, "vertices duplicated to make the soup manifold");
+  line(r.polygons_reversed, "polygons reversed to orient the soup");
+  line(r.polygons_triangulated, "polygons with more than three sides triangulated");
+  return out.str();
+}
+
+double bbox_diagonal(const Mesh& mesh) {
+  if (mesh.number_of_vertices() == 0) return 0;
+  const CGAL::Bbox_3 b = CGAL::Polygon_mesh_processing::bbox(mesh);
+  const double dx = b.xmax() - b.xmin(), dy = b.ymax() - b.ymin(), dz = b.zmax() - b.zmin();
+  return std::sqrt(dx * dx + dy * dy + dz * dz);
+}
+
+double tolerance_option(const Arguments& args, const Mesh& mesh) {
+  if (args.has("--tolerance") && args.has("--tolerance-rel"))
+    throw Input_error("give either --tolerance or --tolerance-rel, not both");
+  if (args.has("--tolerance")) {
+    const std::string text = args.get("--tolerance");
+    if (text == "auto") return -1;
+    const double x = parse_double(text, "--tolerance");
+    if (x < 0) throw Input_error("--tolerance must be non-negative");
+    return x;
+  }
+  if (args.has("--tolerance-rel")) {
+    const double f = args.get_double("--tolerance-rel", 0);
+    if (f < 0) throw Input_error("--tolerance-rel must be non-negative");
+    return f * bbox_diagonal(mesh);
+  }
+  return -1;
+}
+
+namespace {
+volatile std::sig_atomic_t interrupted = 0;
+
+extern "C" void on_signal(int signal_number) {
+  interrupted = 1;
+  const char* pending = CGAL::Mesh_repair::internal::pending_temporary_file();
+  if (pending[0] != '\0') ::unlink(pending);
+  const char message[] = "\nmesh_repair: interrupted, no output written\n";
+  ssize_t ignored = ::write(2, message, sizeof message - 1);
+  (void)ignored;
+  ::_exit(128 + signal_number);
+}
+}  // namespace
+
+void install_signal_handlers() {
+  std::signal(SIGINT, on_signal);
+  std::signal(SIGTERM, on_signal);
+}
+
+bool progress_wanted(const Arguments& args) {
+  return !args.has("--quiet") && ::isatty(2);
+}
+
+Progress_bar::Progress_bar(bool enabled) : enabled_(enabled) {}
+
+void Progress_bar::start_step(const char* name) {
+  step_ = name;
+  start_ = std::chrono::steady_clock::now();
+  last_draw_ = start_ - std::chrono::seconds(1);
+  if (enabled_) draw(0);
+}
+
+bool Progress_bar::progress(double fraction) {
+  if (enabled_ && std::chrono::steady_clock::now() - last_draw_ > std::chrono::milliseconds(100))
+    draw(fraction);
+  return interrupted == 0;
+}
+
+void Progress_bar::end_step(const char*) {
+  if (!enabled_) return;
+  draw(1);
+  std::cerr << '\n';
+}
+
+void Progress_bar::draw(double fraction) {
+  last_draw_ = std::chrono::steady_clock::now();
+  const int width = 30;
+  const int filled = int(fraction * width + 0.5);
+  std::fprintf(stderr, "\r%-24.24s [%.*s%*s] %3d%% %6.1fs", step_.c_str(), filled,
+               "##############################", width - filled, "", int(fraction * 100 + 0.5),
+               seconds_since(start_));
+  std::fflush(stderr);
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace mesh_repair_cli

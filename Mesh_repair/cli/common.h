@@ -1,0 +1,113 @@
+// Copyright (c) 2026 Mesh_repair developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef MESH_REPAIR_CLI_COMMON_H
+#define MESH_REPAIR_CLI_COMMON_H
+
+// What every subcommand of `mesh_repair` shares: the mesh type, option parsing, exit codes,
+// loading and atomic saving, the progress bar and SIGINT handling. Subcommands stay thin: they
+// parse options, call one library operator and print its result.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <chrono>
+#include <map>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Mesh_repair {
+struct Soup_repair_report;
+}
+}  // namespace CGAL
+
+namespace mesh_repair_cli {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Mesh = CGAL::Surface_mesh<Point>;
+
+/// Exit statuses of every command.
+enum Exit_status { exit_success = 0, exit_incomplete = 1, exit_bad_input = 2 };
+
+/// Bad usage or unreadable input: the command prints `what()` on one line and exits with 2.
+struct Input_error : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// Options of one command. Each command declares the flags (no value) and the valued options it
+/// accepts; anything else is a usage error. Valued options may repeat (`get_all`).
+class Arguments {
+ public:
+  Arguments(const std::vector<std::string>& args, const std::set<std::string>& flags,
+            const std::set<std::string>& valued);
+  bool has(const std::string& name) const;
+  std::string get(const std::string& name, const std::string& fallback = {}) const;
+  std::vector<std::string> get_all(const std::string& name) const;
+  double get_double(const std::string& name, double fallback) const;
+  long long get_int(const std::string& name, long long fallback) const;
+  const std::vector<std::string>& positional() const { return positional_; }
+  /// The single input file, or a usage error naming `usage`.
+  std::string single_input(const std::string& usage) const;
+
+ private:
+  std::set<std::string> flags_;
+  std::map<std::string, std::vector<std::string>> values_;
+  std::vector<std::string> positional_;
+};
+
+/// Parses a number or throws Input_error naming the option.
+double parse_double(const std::string& text, const std::string& option);
+long long parse_int(const std::string& text, const std::string& option);
+
+/// Reads, validates and repairs `path` as a polygon soup into `mesh` (see io.h); throws
+/// Input_error with one line on failure.
+void load_mesh(const std::string& path, Mesh& mesh, CGAL::Mesh_repair::Soup_repair_report& report);
+
+/// Writes `mesh` atomically; throws Input_error on failure. `binary` for STL/PLY.
+void save_mesh(const std::string& path, const Mesh& mesh, bool binary = false);
+
+/// Writes `text` to `path` atomically (reports); throws Input_error on failure.
+void save_text(const std::string& path, const std::string& text);
+
+/// One line per soup-stage change, for the readable summaries.
+std::string describe_soup_repair(const CGAL::Mesh_repair::Soup_repair_report& report);
+
+/// The tolerance of `--tolerance X` (absolute) or `--tolerance-rel F` (fraction of the
+/// bounding-box diagonal of `mesh`); negative when neither is given (operators then derive it).
+double tolerance_option(const Arguments& args, const Mesh& mesh);
+
+/// Length of the bounding-box diagonal.
+double bbox_diagonal(const Mesh& mesh);
+
+/// Progress bar on stderr when it is a terminal and `--quiet` is not given; also reports SIGINT
+/// as a cancellation. Models the library's visitor (start_step, progress, end_step).
+class Progress_bar {
+ public:
+  explicit Progress_bar(bool enabled);
+  void start_step(const char* name);
+  bool progress(double fraction);
+  void end_step(const char* name);
+
+ private:
+  void draw(double fraction);
+  bool enabled_;
+  std::string step_;
+  std::chrono::steady_clock::time_point start_;
+  std::chrono::steady_clock::time_point last_draw_;
+};
+
+/// True when stderr is a terminal and the user did not ask for quiet.
+bool progress_wanted(const Arguments& args);
+
+/// Installs the SIGINT/SIGTERM handler: removes a pending temporary output file and exits 130.
+void install_signal_handlers();
+
+/// Seconds since `start`.
+double seconds_since(std::chrono::steady_clock::time_point start);
+
+}  // namespace mesh_repair_cli
+
+#endif  // MESH_REPAIR_CLI_COMMON_H

@@ -1,0 +1,256 @@
+// Copyright (c) 2026 Mesh_repair developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_MESH_REPAIR_IO_H
+#define CGAL_MESH_REPAIR_IO_H
+
+/// \file io.h
+/// Reading and writing meshes the way a repair tool must: every file is read as a polygon soup,
+/// validated (finite coordinates, indices in range, plausible header counts), repaired and
+/// oriented with CGAL, and only then turned into a mesh; every change of that soup stage is
+/// counted in a `Soup_repair_report`. Writing goes to a temporary file renamed over the target,
+/// so a failed or interrupted write never leaves a half-written file.
+///
+/// Formats: OFF, OBJ, STL (ASCII and binary) and PLY (ASCII and binary), chosen by extension.
+
+#include <CGAL/Mesh_repair/internal/json.h>
+#include <CGAL/Mesh_repair/internal/soup_validation.h>
+
+#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+
+#include <array>
+#include <cstdio>
+#include <exception>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Mesh_repair {
+
+/// What the polygon-soup stage found and changed. Point indices refer to the soup as read.
+struct Soup_repair_report {
+  std::size_t input_points = 0;
+  std::size_t input_polygons = 0;
+  std::size_t points_merged = 0;                ///< geometrically identical points merged into one
+  std::size_t polygons_simplified = 0;          ///< polygons with repeated consecutive points
+  std::size_t polygons_split = 0;               ///< pinched polygons split into several
+  std::size_t degenerate_polygons_removed = 0;  ///< fewer than three distinct points
+  std::size_t duplicated_polygons_removed = 0;  ///< same points as another polygon (any order)
+  std::size_t isolated_points_removed = 0;      ///< points used by no polygon
+  std::size_t non_manifold_edges = 0;           ///< edges used by more than two polygons
+  std::size_t non_manifold_vertices = 0;        ///< vertices whose polygons form several fans
+  std::size_t vertices_duplicated = 0;          ///< points added to make the soup manifold
+  std::size_t polygons_reversed = 0;            ///< polygons flipped to agree with neighbours
+  std::size_t polygons_triangulated = 0;        ///< faces with more than three sides split
+  std::size_t triangles_from_polygons = 0;      ///< triangles that replaced them
+  bool orientable = true;                       ///< orientation needed no vertex duplication
+  /// Locations: soup point pairs of non-manifold edges, soup points of non-manifold vertices.
+  std::vector<std::pair<std::size_t, std::size_t>> non_manifold_edge_points;
+  std::vector<std::size_t> non_manifold_vertex_points;
+
+  /// True when the soup stage changed nothing.
+  bool clean() const {
+    return points_merged + polygons_simplified + polygons_split + degenerate_polygons_removed +
+               duplicated_polygons_removed + isolated_points_removed + vertices_duplicated +
+               polygons_reversed + polygons_triangulated ==
+           0;
+  }
+};
+
+/// Writes the soup report as a JSON object (the `soup_repair` member of every report).
+inline void write_json(internal::Json_writer& json, const Soup_repair_report& r) {
+  json.begin_object()
+      .field("input_points", r.input_points)
+      .field("input_polygons", r.input_polygons)
+      .field("points_merged", r.points_merged)
+      .field("polygons_simplified", r.polygons_simplified)
+      .field("polygons_split", r.polygons_split)
+      .field("degenerate_polygons_removed", r.degenerate_polygons_removed)
+      .field("duplicated_polygons_removed", r.duplicated_polygons_removed)
+      .field("isolated_points_removed", r.isolated_points_removed)
+      .field("non_manifold_edges", r.non_manifold_edges)
+      .field("non_manifold_vertices", r.non_manifold_vertices)
+      .field("vertices_duplicated", r.vertices_duplicated)
+      .field("polygons_reversed", r.polygons_reversed)
+      .field("polygons_triangulated", r.polygons_triangulated)
+      .field("triangles_from_polygons", r.triangles_from_polygons)
+      .field("orientable", r.orientable);
+  json.key("non_manifold_edge_points").begin_array();
+  for (const auto& e : r.non_manifold_edge_points)
+    json.begin_array().value(e.first).value(e.second).end_array();
+  json.end_array();
+  json.array("non_manifold_vertex_points", r.non_manifold_vertex_points);
+  json.end_object();
+}
+
+/// Options of `read_mesh`.
+struct Read_options {
+  bool repair_soup = true;  ///< run CGAL's polygon-soup repair and orientation
+  bool triangulate = true;  ///< split faces with more than three sides into triangles
+};
+
+/// A soup as read from a file: points and polygons of point indices.
+template <class Point>
+struct Polygon_soup {
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t>> polygons;
+};
+
+/// Reads `filename` (OFF, OBJ, STL or PLY, by extension) into a polygon soup and validates it.
+/// Returns an empty string on success, else one line saying what is wrong with the file.
+/// Never throws; never modifies the file.
+template <class Point>
+std::string read_polygon_soup(const std::string& filename, Polygon_soup<Point>& soup) {
+  soup.points.clear();
+  soup.polygons.clear();
+  std::string error = internal::precheck_mesh_file(filename);
+  if (!error.empty()) return error;
+  try {
+    if (!CGAL::IO::read_polygon_soup(filename, soup.points, soup.polygons,
+                                     CGAL::parameters::verbose(false)))
+      return filename + ": not a readable " + internal::format_name(filename) + " mesh";
+  } catch (const std::bad_alloc&) {
+    return filename + ": out of memory while reading (corrupt counts?)";
+  } catch (const std::exception& e) {
+    return filename + ": cannot be read: " + e.what();
+  }
+  return internal::validate_soup(filename, soup.points, soup.polygons);
+}
+
+namespace internal {
+
+// Counts what `orient_polygon_soup` reports, with locations.
+struct Orientation_counter : CGAL::Polygon_mesh_processing::Default_orientation_visitor {
+  Soup_repair_report* report;
+  std::set<std::pair<std::size_t, std::size_t>> seen_edges;
+  std::set<std::size_t> seen_vertices;
+  explicit Orientation_counter(Soup_repair_report* r) : report(r) {}
+  // CGAL calls this once per polygon around the edge; count each edge once.
+  void non_manifold_edge(std::size_t a, std::size_t b, std::size_t) {
+    if (!seen_edges.insert(std::make_pair(std::min(a, b), std::max(a, b))).second) return;
+    ++report->non_manifold_edges;
+    report->non_manifold_edge_points.emplace_back(a, b);
+  }
+  void non_manifold_vertex(std::size_t v, std::size_t) {
+    if (!seen_vertices.insert(v).second) return;
+    ++report->non_manifold_vertices;
+    report->non_manifold_vertex_points.push_back(v);
+  }
+  void duplicated_vertex(std::size_t, std::size_t) { ++report->vertices_duplicated; }
+  void polygon_orientation_reversed(std::size_t) { ++report->polygons_reversed; }
+};
+
+}  // namespace internal
+
+/// Repairs and orients a soup in place with CGAL (`repair_polygon_soup`'s steps, one by one so
+/// each is counted, then `orient_polygon_soup`, which duplicates non-manifold vertices).
+template <class Point>
+Soup_repair_report repair_polygon_soup(Polygon_soup<Point>& soup) {
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  using Traits = typename CGAL::Kernel_traits<Point>::Kernel;
+  Soup_repair_report report;
+  report.input_points = soup.points.size();
+  report.input_polygons = soup.polygons.size();
+  auto& points = soup.points;
+  auto& polygons = soup.polygons;
+  Traits traits;
+
+  report.points_merged = PMP::merge_duplicate_points_in_polygon_soup(points, polygons);
+  report.polygons_simplified =
+      PMP::internal::simplify_polygons_in_polygon_soup(points, polygons, traits);
+  report.polygons_split =
+      PMP::internal::split_pinched_polygons_in_polygon_soup(points, polygons, traits);
+  report.degenerate_polygons_removed =
+      PMP::internal::remove_invalid_polygons_in_polygon_soup(points, polygons);
+  report.duplicated_polygons_removed =
+      PMP::merge_duplicate_polygons_in_polygon_soup(points, polygons);
+  report.isolated_points_removed = PMP::remove_isolated_points_in_polygon_soup(points, polygons);
+
+  internal::Orientation_counter counter(&report);
+  report.orientable =
+      PMP::orient_polygon_soup(points, polygons, CGAL::parameters::visitor(counter));
+  return report;
+}
+
+/// Builds `pm` from a soup that `repair_polygon_soup` made manifold. Faces with more than three
+/// sides are triangulated when `triangulate` is set (counted in `report`).
+template <class PolygonMesh, class Point>
+std::string soup_to_mesh(const Polygon_soup<Point>& soup, PolygonMesh& pm, bool triangulate,
+                         Soup_repair_report& report) {
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  if (!PMP::is_polygon_soup_a_polygon_mesh(soup.polygons))
+    return "the polygon soup is not a valid polygon mesh even after repair";
+  PMP::polygon_soup_to_polygon_mesh(soup.points, soup.polygons, pm);
+  if (triangulate) {
+    std::size_t non_triangles = 0;
+    for (const auto& polygon : soup.polygons) non_triangles += polygon.size() > 3 ? 1 : 0;
+    if (non_triangles > 0) {
+      const std::size_t before = num_faces(pm);
+      if (!PMP::triangulate_faces(pm)) return "some faces could not be triangulated";
+      report.polygons_triangulated = non_triangles;
+      report.triangles_from_polygons = num_faces(pm) - before + non_triangles;
+    }
+  }
+  return {};
+}
+
+/// Reads, validates, repairs and converts `filename` into `pm`. Returns an empty string on
+/// success, else one line describing the problem (then `pm` is left empty).
+template <class PolygonMesh>
+std::string read_mesh(const std::string& filename, PolygonMesh& pm, Soup_repair_report& report,
+                      const Read_options& options = Read_options()) {
+  using Point = typename boost::property_traits<
+      typename boost::property_map<PolygonMesh, CGAL::vertex_point_t>::type>::value_type;
+  Polygon_soup<Point> soup;
+  std::string error = read_polygon_soup(filename, soup);
+  if (!error.empty()) return error;
+  report = Soup_repair_report();
+  report.input_points = soup.points.size();
+  report.input_polygons = soup.polygons.size();
+  if (options.repair_soup) report = repair_polygon_soup(soup);
+  if (soup.polygons.empty()) return filename + ": no valid face left after soup repair";
+  error = soup_to_mesh(soup, pm, options.triangulate, report);
+  if (!error.empty()) {
+    clear(pm);
+    return filename + ": " + error;
+  }
+  return {};
+}
+
+/// Writes `pm` to `filename` (format by extension; `binary` selects binary STL/PLY) through a
+/// temporary file in the same folder, renamed over the target only once it is complete.
+/// Returns an empty string on success, else one line describing the problem.
+template <class PolygonMesh>
+std::string write_mesh(const std::string& filename, const PolygonMesh& pm, bool binary = false) {
+  const std::string format = internal::format_name(filename);
+  if (format.empty()) return filename + ": unknown output format (use .off, .obj, .stl or .ply)";
+  const std::string temporary = internal::temporary_name_for(filename);
+  internal::register_temporary_file(temporary);
+  bool ok = false;
+  try {
+    ok = CGAL::IO::write_polygon_mesh(
+        temporary, pm, CGAL::parameters::stream_precision(17).use_binary_mode(binary));
+  } catch (const std::exception&) {
+    ok = false;
+  }
+  if (!ok) {
+    std::remove(temporary.c_str());
+    internal::register_temporary_file({});
+    return filename + ": cannot be written";
+  }
+  const bool renamed = std::rename(temporary.c_str(), filename.c_str()) == 0;
+  if (!renamed) std::remove(temporary.c_str());
+  internal::register_temporary_file({});
+  return renamed ? std::string() : filename + ": cannot be renamed into place";
+}
+
+}  // namespace Mesh_repair
+}  // namespace CGAL
+
+#endif  // CGAL_MESH_REPAIR_IO_H

@@ -1,0 +1,9 @@
+#!/usr/bin/env bash
+# Builds with AddressSanitizer + UndefinedBehaviorSanitizer into build-asan/ and runs the suite.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+export MESH_REPAIR_BUILD_DIR="$root/build-asan"
+export BUILD_TYPE=RelWithDebInfo
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+"$root/scripts/test.sh" -DMESH_REPAIR_SANITIZE=ON -DMESH_REPAIR_BUILD_BENCHMARKS=OFF "$@"

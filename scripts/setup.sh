@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# Installs the Debian packages Mesh_repair needs, only those that are missing.
+# Usage: scripts/setup.sh [--with-plots]   (--with-plots adds python3-matplotlib for the bench plots)
+set -euo pipefail
+
+packages=(cmake g++ make libcgal-dev libeigen3-dev libboost-dev libgmp-dev libmpfr-dev
+          libtbb-dev libgtest-dev googletest libbenchmark-dev)
+if [[ "${1:-}" == "--with-plots" ]]; then packages+=(python3-matplotlib); fi
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if ((${#missing[@]} == 0)); then
+  echo "setup: all required packages are installed"
+  exit 0
+fi
+
+echo "setup: installing ${missing[*]}"
+SUDO=""
+if [[ $(id -u) -ne 0 ]]; then SUDO="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,148 @@
+// Reading, soup repair counts and atomic writing (io.h).
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Mesh_repair/generators.h>
+#include <CGAL/Mesh_repair/io.h>
+#include <CGAL/Surface_mesh.h>
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+namespace {
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Mesh = CGAL::Surface_mesh<Point>;
+namespace MR = CGAL::Mesh_repair;
+namespace fs = std::filesystem;
+
+fs::path scratch(const std::string& name) {
+  fs::path dir = fs::temp_directory_path() / ("mesh_repair_test_io_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  return dir / name;
+}
+
+void write_text(const fs::path& path, const std::string& text) {
+  std::ofstream out(path);
+  out << text;
+}
+
+TEST(ReadWrite, RoundTripKeepsTheSphereInEveryFormat) {
+  Mesh sphere;
+  MR::make_sphere(sphere, Point(0, 0, 0), 1.0, 2);
+  for (std::string ext : {"off", "obj", "stl", "ply"}) {
+    for (bool binary : {false, true}) {
+      if (binary && (ext == "off" || ext == "obj")) continue;
+      const fs::path path = scratch("sphere_" + std::to_string(binary) + "." + ext);
+      ASSERT_EQ(MR::write_mesh(path.string(), sphere, binary), "") << ext;
+      Mesh back;
+      MR::Soup_repair_report report;
+      ASSERT_EQ(MR::read_mesh(path.string(), back, report), "") << ext;
+      EXPECT_EQ(num_faces(back), num_faces(sphere)) << ext;
+      EXPECT_EQ(num_vertices(back), num_vertices(sphere)) << ext;
+      EXPECT_EQ(report.polygons_reversed, 0u) << ext;
+      EXPECT_TRUE(CGAL::is_closed(back)) << ext;
+    }
+  }
+}
+
+TEST(ReadWrite, WritingLeavesNoTemporaryFile) {
+  Mesh sphere;
+  MR::make_sphere(sphere, Point(0, 0, 0), 1.0, 1);
+  const fs::path path = scratch("atomic.off");
+  ASSERT_EQ(MR::write_mesh(path.string(), sphere), "");
+  for (const auto& entry : fs::directory_iterator(path.parent_path()))
+    EXPECT_EQ(entry.path().filename().string().find(".tmp-"), std::string::npos);
+}
+
+TEST(ReadWrite, UnknownOutputFormatIsRefused) {
+  Mesh sphere;
+  MR::make_sphere(sphere, Point(0, 0, 0), 1.0, 0);
+  EXPECT_NE(MR::write_mesh(scratch("x.xyz").string(), sphere), "");
+  EXPECT_FALSE(fs::exists(scratch("x.xyz")));
+}
+
+TEST(SoupRepair, CountsDuplicatedPointsAndFaces) {
+  // Two triangles sharing an edge through duplicated points, plus a duplicated triangle.
+  const fs::path path = scratch("dup.off");
+  write_text(path,
+             "OFF\n6 3 0\n0 0 0\n1 0 0\n0 1 0\n1 0 0\n0 1 0\n1 1 0\n"
+             "3 0 1 2\n3 3 5 4\n3 2 1 0\n");
+  Mesh mesh;
+  MR::Soup_repair_report report;
+  ASSERT_EQ(MR::read_mesh(path.string(), mesh, report), "");
+  EXPECT_EQ(report.points_merged, 2u);
+  EXPECT_EQ(report.duplicated_polygons_removed, 1u);
+  EXPECT_EQ(num_faces(mesh), 2u);
+  EXPECT_EQ(num_vertices(mesh), 4u);
+}
+
+TEST(SoupRepair, SplitsAnEdgeSharedByThreeTriangles) {
+  const fs::path path = scratch("fin.off");
+  write_text(path,
+             "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n"
+             "3 0 1 2\n3 1 0 3\n3 0 1 4\n");
+  Mesh mesh;
+  MR::Soup_repair_report report;
+  ASSERT_EQ(MR::read_mesh(path.string(), mesh, report), "");
+  EXPECT_EQ(report.non_manifold_edges, 1u);
+  EXPECT_GT(report.vertices_duplicated, 0u);
+  EXPECT_EQ(num_faces(mesh), 3u);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+}
+
+TEST(SoupRepair, ReorientsAFlippedTriangle) {
+  const fs::path path = scratch("flip.off");
+  write_text(path, "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n3 1 2 3\n");
+  Mesh mesh;
+  MR::Soup_repair_report report;
+  ASSERT_EQ(MR::read_mesh(path.string(), mesh, report), "");
+  EXPECT_EQ(report.polygons_reversed, 1u);
+  EXPECT_EQ(num_faces(mesh), 2u);
+}
+
+TEST(SoupRepair, TriangulatesQuadsAndCountsThem) {
+  const fs::path path = scratch("quad.obj");
+  write_text(path, "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n");
+  Mesh mesh;
+  MR::Soup_repair_report report;
+  ASSERT_EQ(MR::read_mesh(path.string(), mesh, report), "");
+  EXPECT_EQ(report.polygons_triangulated, 1u);
+  EXPECT_EQ(num_faces(mesh), 2u);
+}
+
+TEST(ReadErrors, EachBadFileGetsOneLine) {
+  struct Case {
+    std::string name, content;
+  };
+  const std::vector<Case> cases = {
+      {"empty.off", ""},
+      {"nan.off", "OFF\n3 1 0\n0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n"},
+      {"inf.obj", "v 0 0 0\nv inf 0 0\nv 0 1 0\nf 1 2 3\n"},
+      {"range.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n"},
+      {"huge.off", "OFF\n1000000000 1 0\n0 0 0\n"},
+      {"huge.ply",
+       "ply\nformat ascii 1.0\nelement vertex 1000000000\nproperty float x\n"
+       "property float y\nproperty float z\nelement face 1\n"
+       "property list uchar int vertex_indices\nend_header\n0 0 0\n"},
+      {"truncated.stl", std::string(80, 'x') + std::string("\x10\x00\x00\x00", 4) + "abc"},
+      {"noise.off", "\x01\x02garbage\xff\xfe"},
+      {"mesh.xyz", "0 0 0\n"},
+  };
+  for (const Case& c : cases) {
+    const fs::path path = scratch(c.name);
+    write_text(path, c.content);
+    Mesh mesh;
+    MR::Soup_repair_report report;
+    const std::string error = MR::read_mesh(path.string(), mesh, report);
+    EXPECT_FALSE(error.empty()) << c.name;
+    EXPECT_EQ(error.find('\n'), std::string::npos) << c.name;
+    EXPECT_EQ(num_faces(mesh), 0u) << c.name;
+  }
+  Mesh mesh;
+  MR::Soup_repair_report report;
+  EXPECT_NE(MR::read_mesh(fs::temp_directory_path().string(), mesh, report), "");
+  EXPECT_NE(MR::read_mesh("/nonexistent/file.off", mesh, report), "");
+}
+
+}  // namespace
