@@ -1,0 +1,89 @@
+// Copyright (c) 2026 Mesh_repair developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_MESH_REPAIR_HOLE_FILLING_FILL_RESULT_H
+#define CGAL_MESH_REPAIR_HOLE_FILLING_FILL_RESULT_H
+
+/// \file fill_result.h
+/// What every hole-filling method reports, so that all methods are called and measured the same
+/// way by `fill_hole`/`fill_holes` (fill_holes.h), `automatic_repair` and `mesh_repair bench
+/// holes`.
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Mesh_repair {
+
+/// The hole-filling methods. `automatic` lets the caller choose per hole (see fill_holes.h).
+enum class Fill_method { advancing_front, liepa, shape_prediction, curvature_variation, automatic };
+
+inline const char* to_string(Fill_method method) {
+  switch (method) {
+    case Fill_method::advancing_front:
+      return "advancing_front";
+    case Fill_method::liepa:
+      return "liepa";
+    case Fill_method::shape_prediction:
+      return "shape_prediction";
+    case Fill_method::curvature_variation:
+      return "curvature_variation";
+    case Fill_method::automatic:
+      return "auto";
+  }
+  return "unknown";
+}
+
+/// Parses a method name as written by `to_string` ("auto" or "automatic" for automatic).
+inline bool fill_method_from_string(const std::string& name, Fill_method& method) {
+  for (Fill_method m :
+       {Fill_method::advancing_front, Fill_method::liepa, Fill_method::shape_prediction,
+        Fill_method::curvature_variation, Fill_method::automatic}) {
+    if (name == to_string(m)) {
+      method = m;
+      return true;
+    }
+  }
+  if (name == "automatic") {
+    method = Fill_method::automatic;
+    return true;
+  }
+  return false;
+}
+
+/// The elements a method added to the mesh for one hole.
+template <class PolygonMesh>
+struct Fill_patch {
+  std::vector<typename boost::graph_traits<PolygonMesh>::face_descriptor> faces;
+  std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor> vertices;
+};
+
+/// What happened to one hole.
+struct Hole_fill_report {
+  std::size_t border_edges = 0;   ///< edges of the outer border cycle
+  std::size_t island_cycles = 0;  ///< island border cycles bridged into this hole (ring holes)
+  double perimeter = 0;           ///< of the outer border cycle, model units
+  Fill_method requested = Fill_method::advancing_front;
+  Fill_method used = Fill_method::advancing_front;  ///< the method whose patch was kept
+  bool filled = false;
+  bool skipped = false;                ///< not selected (size limit or filter); left open
+  std::string failure;                 ///< why it was not filled (empty when filled)
+  std::vector<std::string> fallbacks;  ///< methods tried and rejected before `used`, with reasons
+  std::size_t faces_created = 0;
+  std::size_t vertices_created = 0;
+  double seconds = 0;
+};
+
+/// What `fill_holes` did to every hole of a mesh.
+struct Fill_result {
+  std::vector<Hole_fill_report> holes;
+  std::size_t filled = 0, failed = 0, skipped = 0;
+  bool cancelled = false;
+  bool all_filled() const { return failed == 0 && !cancelled; }
+};
+
+}  // namespace Mesh_repair
+}  // namespace CGAL
+
+#endif  // CGAL_MESH_REPAIR_HOLE_FILLING_FILL_RESULT_H
