@@ -65,6 +65,15 @@ TEST(CliRobustness, MalformedInputsExitTwoWithOneLine) {
       {"inf.off", "OFF\n3 1 0\n0 0 0\ninf 0 0\n0 1 0\n3 0 1 2\n"},
       {"range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n"},
       {"huge.off", "OFF\n1000000000 1000000000 0\n0 0 0\n"},
+      {"huge.ply",
+       "ply\nformat ascii 1.0\nelement vertex 1000000000\nproperty float x\nproperty float y\n"
+       "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+       "0 0 0\n"},
+      {"negative.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 -1\n"},
+      {"no_faces.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n"},
+      {"only_degenerate.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 0 0\n"},
+      {"truncated_ascii.stl",
+       "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0\n"},
       {"noise.off", noise},
       {"noise.stl", noise},
       {"noise.ply", noise},

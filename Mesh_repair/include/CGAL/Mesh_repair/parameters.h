@@ -61,6 +61,7 @@ using CGAL::parameters::choose_parameter;
 using CGAL::parameters::Default_named_parameters;
 using CGAL::parameters::default_values;
 using CGAL::parameters::get_parameter;
+using CGAL::parameters::get_parameter_reference;
 
 #define MESH_REPAIR_PARAMETER(name)                                                             \
   template <typename K>                                                                         \
@@ -69,6 +70,16 @@ using CGAL::parameters::get_parameter;
   }
 #include <CGAL/Mesh_repair/internal/parameters_list.h>
 #undef MESH_REPAIR_PARAMETER
+
+// CGAL's parameters as free functions too, so a chain may start with any of them and still
+// accept ours: `parameters::vertex_point_map(vpm).merge_tolerance(0.1)`.
+#define CGAL_add_named_parameter(X, Y, Z)                                             \
+  template <typename K>                                                               \
+  Named_parameters<K, CGAL::internal_np::X, CGAL::internal_np::No_property> Z(const K& k) { \
+    return {k};                                                                       \
+  }
+#include <CGAL/STL_Extension/internal/parameters_interface.h>
+#undef CGAL_add_named_parameter
 
 /// Continues a pack that began with CGAL's free functions, so Mesh_repair's members can follow.
 template <typename T, typename Tag, typename Base>

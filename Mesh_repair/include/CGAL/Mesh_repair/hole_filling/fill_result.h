@@ -73,6 +73,17 @@ struct Hole_fill_report {
   std::size_t faces_created = 0;
   std::size_t vertices_created = 0;
   double seconds = 0;
+  std::vector<std::string> notes;  ///< non-fatal remarks on a kept patch (e.g. fairing failed)
+};
+
+/// What a `hole_filter` predicate of `fill_holes` sees of a hole before it is filled.
+struct Hole_description {
+  std::size_t border_edges = 0;   ///< edges of the outer border cycle
+  std::size_t island_cycles = 0;  ///< island cycles inside it (ring hole), 0 for a simple hole
+  std::size_t island_edges = 0;   ///< edges of those island cycles
+  double perimeter = 0;           ///< of the outer border cycle, model units
+  double diameter = 0;            ///< bounding-box diagonal of the outer cycle, model units
+  double relative_size = 0;       ///< diameter / bounding-box diagonal of the mesh
 };
 
 /// What `fill_holes` did to every hole of a mesh.

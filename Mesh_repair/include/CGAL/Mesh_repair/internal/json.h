@@ -60,6 +60,11 @@ class Json_writer {
     return scalar([&] { out_ << i; });
   }
 
+  /// Writes an already serialised JSON value (an operator's own report) as the next value.
+  Json_writer& raw(const std::string& json_text) {
+    return scalar([&] { out_ << json_text; });
+  }
+
   template <class T>
   Json_writer& field(const std::string& name, const T& v) {
     key(name);

@@ -1,0 +1,501 @@
+// Copyright (c) 2026 Mesh_repair developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// mesh_repair bench holes: the ground-truth hole-filling benchmark (doc/bench_holes.md). Punches
+// holes with hole_benchmark.h, fills them with every requested method through the same
+// dispatcher, measures each fill against the removed patch (or the exact surface) and writes
+// results.jsonl, table.md and plots.
+#include "commands.h"
+#include "common.h"
+
+#include <CGAL/Mesh_repair/fill_holes.h>
+#include <CGAL/Mesh_repair/hole_benchmark.h>
+#include <CGAL/Mesh_repair/internal/json.h>
+#include <CGAL/Mesh_repair/io.h>
+
+#include <CGAL/Polygon_mesh_processing/border.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+namespace mesh_repair_cli {
+
+const char* const bench_help =
+    "usage: mesh_repair bench holes [--mesh M]... [--analytic sphere|torus|saddle]...\n"
+    "          --holes K --radius F[,F2,...] --seeds S1[,S2,...] --methods a[,b,...]|all\n"
+    "          [--shape disc|jagged|elongated|ring] --out DIR [--no-plots]\n"
+    "          [--plot-script plot_bench.py] [--quiet]\n"
+    "Punches K holes of radius F x bounding-box diagonal into each mesh (deterministic per\n"
+    "seed), fills them with every method in this process and measures each fill against the\n"
+    "removed patch (exact distance on analytic surfaces): E1, E2, Einf (also / diagonal),\n"
+    "Hausdorff distance, normal deviation across the border, patch quality, closedness,\n"
+    "self-intersections, time. Writes DIR/results.jsonl (one line per hole x method x seed),\n"
+    "DIR/table.md (median and worst per method) and DIR/*.png (scripts/plot_bench.py).\n"
+    "Methods: advancing_front, liepa (CGAL's default continuity 1), liepa_c0, liepa_c1,\n"
+    "liepa_c2, shape_prediction, curvature_variation; all = every one of these but liepa.\n"
+    "Exit 0 when every case ran (failed fills are results, not errors).\n";
+
+namespace {
+
+namespace MR = CGAL::Mesh_repair;
+using halfedge_descriptor = Mesh::Halfedge_index;
+using Hole = MR::Punched_hole<Mesh, Point>;
+
+struct Method {
+  std::string name;
+  MR::Fill_method method;
+  int continuity;  // fairing continuity for liepa; -1 for the method's default
+};
+
+const std::vector<Method>& known_methods() {
+  static const std::vector<Method> methods = {
+      {"advancing_front", MR::Fill_method::advancing_front, -1},
+      {"liepa", MR::Fill_method::liepa, -1},
+      {"liepa_c0", MR::Fill_method::liepa, 0},
+      {"liepa_c1", MR::Fill_method::liepa, 1},
+      {"liepa_c2", MR::Fill_method::liepa, 2},
+      {"shape_prediction", MR::Fill_method::shape_prediction, -1},
+      {"curvature_variation", MR::Fill_method::curvature_variation, -1}};
+  return methods;
+}
+
+std::vector<std::string> split_list(const std::string& text) {
+  std::vector<std::string> items;
+  std::stringstream stream(text);
+  for (std::string item; std::getline(stream, item, ',');)
+    if (!item.empty()) items.push_back(item);
+  return items;
+}
+
+std::vector<Method> parse_methods(const std::string& text) {
+  std::vector<Method> methods;
+  for (const std::string& name : split_list(text)) {
+    if (name == "all") {
+      for (const Method& m : known_methods())
+        if (m.name != "liepa") methods.push_back(m);
+      continue;
+    }
+    auto it = std::find_if(known_methods().begin(), known_methods().end(),
+                           [&](const Method& m) { return m.name == name; });
+    if (it == known_methods().end()) throw Input_error("unknown method '" + name + "'");
+    methods.push_back(*it);
+  }
+  if (methods.empty()) throw Input_error("--methods needs at least one method");
+  return methods;
+}
+
+struct Bench_case {
+  std::string name;
+  std::string path;  // empty for analytic surfaces
+  bool analytic = false;
+  MR::Analytic_surface surface = MR::Analytic_surface::sphere;
+};
+
+struct Options {
+  std::vector<Bench_case> cases;
+  std::size_t holes = 0;
+  std::vector<double> radii;
+  std::vector<unsigned int> seeds;
+  std::vector<Method> methods;
+  MR::Hole_shape shape = MR::Hole_shape::disc;
+  std::string out;
+  bool plots = true;
+  bool progress = false;
+  std::string plot_script;
+};
+
+Options parse_options(const std::vector<std::string>& args) {
+  if (args.empty() || args[0] != "holes")
+    throw Input_error("expected 'bench holes' (the only benchmark); see --help");
+  const Arguments arguments(std::vector<std::string>(args.begin() + 1, args.end()),
+                            {"--no-plots", "--quiet"},
+                            {"--mesh", "--analytic", "--holes", "--radius", "--seeds", "--methods",
+                             "--shape", "--out", "--plot-script"});
+  if (!arguments.positional().empty())
+    throw Input_error("unexpected argument '" + arguments.positional()[0] + "'");
+  Options o;
+  for (const std::string& name : arguments.get_all("--analytic")) {
+    Bench_case c;
+    if (!MR::analytic_surface_from_string(name, c.surface))
+      throw Input_error("--analytic expects sphere, torus or saddle, got '" + name + "'");
+    c.name = name;
+    c.analytic = true;
+    o.cases.push_back(c);
+  }
+  for (const std::string& path : arguments.get_all("--mesh"))
+    o.cases.push_back({std::filesystem::path(path).stem().string(), path, false, {}});
+  if (o.cases.empty()) throw Input_error("give at least one --mesh or --analytic");
+  const long long holes = arguments.get_int("--holes", 1);
+  if (holes < 1) throw Input_error("--holes must be at least 1");
+  o.holes = std::size_t(holes);
+  for (const std::string& r : split_list(arguments.get("--radius", "0.05"))) {
+    const double radius = parse_double(r, "--radius");
+    if (radius <= 0 || radius >= 0.5) throw Input_error("--radius must be in (0, 0.5)");
+    o.radii.push_back(radius);
+  }
+  for (const std::string& s : split_list(arguments.get("--seeds", "1"))) {
+    const long long seed = parse_int(s, "--seeds");
+    if (seed < 0) throw Input_error("--seeds must be non-negative");
+    o.seeds.push_back(static_cast<unsigned int>(seed));
+  }
+  o.methods = parse_methods(arguments.get("--methods", "liepa"));
+  if (!MR::hole_shape_from_string(arguments.get("--shape", "disc"), o.shape))
+    throw Input_error("--shape expects disc, jagged, elongated or ring");
+  o.out = arguments.get("--out");
+  if (o.out.empty()) throw Input_error("--out DIR is required");
+  o.plots = !arguments.has("--no-plots");
+  o.progress = progress_wanted(arguments);
+  o.plot_script = arguments.get("--plot-script");
+  return o;
+}
+
+MR::Hole_fill_report fill_one(Mesh& mesh, halfedge_descriptor border, const Method& method,
+                              unsigned int seed) {
+  const auto np = MR::parameters::fill_method(method.method).random_seed(seed);
+  if (method.continuity >= 0)
+    return MR::fill_hole(mesh, border, np.fairing_continuity(unsigned(method.continuity)));
+  return MR::fill_hole(mesh, border, np);
+}
+
+// One line of results.jsonl, kept for the table.
+struct Row {
+  std::string mesh, method, failure;
+  double radius = 0;
+  bool filled = false, closed = false, self_intersecting = false;
+  std::map<std::string, double> values;
+};
+
+// The measures of the table: (key, label, larger is worse).
+const std::vector<std::tuple<std::string, std::string, bool>>& table_measures() {
+  static const std::vector<std::tuple<std::string, std::string, bool>> measures = {
+      {"e1_rel", "E1/diag", true},
+      {"e2_rel", "E2/diag", true},
+      {"einf_rel", "Einf/diag", true},
+      {"hausdorff_rel", "Hausdorff/diag", true},
+      {"normal_deviation_max_deg", "normal dev. max (deg)", true},
+      {"normal_deviation_mean_deg", "normal dev. mean (deg)", true},
+      {"min_alpha", "min alpha", false},
+      {"min_angle_deg", "min angle (deg)", false},
+      {"seconds", "time (s)", true}};
+  return measures;
+}
+
+struct Case_context {
+  std::string name;
+  bool analytic = false;
+  double diagonal = 0;
+  std::size_t input_border_cycles = 0;
+  std::function<double(const Point&)> exact;
+};
+
+std::size_t count_border_cycles(const Mesh& mesh) {
+  std::vector<halfedge_descriptor> cycles;
+  CGAL::Polygon_mesh_processing::extract_boundary_cycles(mesh, std::back_inserter(cycles));
+  return cycles.size();
+}
+
+void write_row(std::ostream& out, const Case_context& context, const Options& options,
+               double radius, unsigned int seed, std::size_t hole_index, const Hole& hole,
+               const Method& method, const MR::Hole_fill_report& report,
+               const MR::Hole_fill_metrics& m, bool mesh_closed, bool mesh_valid, Row& row) {
+  MR::internal::Json_writer json(out, false);
+  json.begin_object();
+  json.field("mesh", context.name).field("analytic", context.analytic);
+  json.field("shape", MR::to_string(options.shape)).field("radius", radius).field("seed", seed);
+  json.field("hole", hole_index).field("method", method.name);
+  json.field("border_edges", hole.outer_border_edges)
+      .field("island_cycles", hole.island_border_halfedges.size())
+      .field("perimeter", hole.outer_perimeter)
+      .field("removed_faces", hole.removed_faces)
+      .field("requested_radius", hole.requested_radius)
+      .field("achieved_radius", hole.achieved_radius)
+      .field("diagonal", context.diagonal);
+  json.field("reported_filled", report.filled).field("failure", report.failure);
+  json.field("used_method", MR::to_string(report.used))
+      .field("detected_island_cycles", report.island_cycles);
+  std::string notes;
+  for (const std::string& note : report.notes) notes += (notes.empty() ? "" : "; ") + note;
+  for (const std::string& fallback : report.fallbacks)
+    notes += (notes.empty() ? "fallback " : "; fallback ") + fallback;
+  json.field("notes", notes);
+  json.field("filled", m.filled).field("closed", m.closed).field("bounded", m.bounded);
+  json.field("patch_faces", m.patch_faces).field("patch_vertices", m.patch_vertices);
+  json.field("samples", m.samples);
+  row.values = {{"e1", m.e1},
+                {"e2", m.e2},
+                {"einf", m.einf},
+                {"e1_rel", m.e1_rel},
+                {"e2_rel", m.e2_rel},
+                {"einf_rel", m.einf_rel},
+                {"e1_nodes", m.e1_nodes},
+                {"e2_nodes", m.e2_nodes},
+                {"einf_nodes", m.einf_nodes},
+                {"hausdorff", m.hausdorff},
+                {"hausdorff_rel", m.hausdorff_rel},
+                {"normal_deviation_max_deg", m.normal_deviation_max_deg},
+                {"normal_deviation_mean_deg", m.normal_deviation_mean_deg},
+                {"min_alpha", m.min_alpha},
+                {"mean_alpha", m.mean_alpha},
+                {"min_angle_deg", m.min_angle_deg},
+                {"seconds", report.seconds}};
+  for (const auto& [key, value] : row.values) json.field(key, value);
+  json.field("self_intersections", m.self_intersections);
+  json.field("mesh_closed", mesh_closed).field("mesh_valid", mesh_valid);
+  json.end_object();
+  row.mesh = context.name;
+  row.method = method.name;
+  row.failure = report.failure;
+  row.radius = radius;
+  row.filled = m.filled;
+  row.closed = m.closed;
+  row.self_intersecting = m.self_intersections > 0;
+}
+
+// Fills every hole of `holed` with `method` and appends one row per hole.
+void run_method(const Mesh& holed, const std::vector<Hole>& holes, const Case_context& context,
+                const Options& options, double radius, unsigned int seed, const Method& method,
+                std::ostream& jsonl, std::vector<Row>& rows) {
+  Mesh mesh = holed;  // Surface_mesh copies keep every descriptor, so `holes` stay valid
+  std::vector<MR::Hole_fill_report> reports;
+  for (const Hole& hole : holes) {
+    const auto start = std::chrono::steady_clock::now();
+    MR::Hole_fill_report report;
+    try {
+      report = fill_one(mesh, hole.border_halfedge, method, seed);
+    } catch (const std::exception& e) {
+      report.failure = std::string("exception: ") + e.what();
+    }
+    report.seconds = seconds_since(start);
+    reports.push_back(report);
+  }
+  std::vector<std::vector<Mesh::Face_index>> patches;
+  for (const Hole& hole : holes) {
+    bool bounded = true;
+    patches.push_back(MR::hole_patch_faces(mesh, hole, bounded));
+  }
+  const bool triangulated = CGAL::is_triangle_mesh(mesh);
+  const std::vector<std::size_t> intersections =
+      triangulated ? MR::count_patch_self_intersections(mesh, patches)
+                   : std::vector<std::size_t>(holes.size(), 0);
+  const bool mesh_valid = CGAL::is_valid_polygon_mesh(mesh);
+  const bool mesh_closed = count_border_cycles(mesh) == context.input_border_cycles;
+  for (std::size_t i = 0; i < holes.size(); ++i) {
+    MR::Hole_fill_metrics m =
+        MR::measure_filled_hole(mesh, holes[i], context.diagonal, context.exact);
+    m.self_intersections = intersections[i];
+    rows.emplace_back();
+    write_row(jsonl, context, options, radius, seed, i, holes[i], method, reports[i], m,
+              mesh_closed, mesh_valid, rows.back());
+  }
+}
+
+Mesh load_case(const Bench_case& c, Case_context& context) {
+  Mesh mesh;
+  if (c.analytic) {
+    MR::make_analytic_mesh(mesh, c.surface);
+    context.exact = MR::analytic_distance<Point>(c.surface);
+  } else {
+    MR::Soup_repair_report soup;
+    load_mesh(c.path, mesh, soup);
+  }
+  context.name = c.name;
+  context.analytic = c.analytic;
+  context.diagonal = bbox_diagonal(mesh);
+  context.input_border_cycles = count_border_cycles(mesh);
+  return mesh;
+}
+
+double median(std::vector<double> values) {
+  if (values.empty()) return std::numeric_limits<double>::quiet_NaN();
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+std::string format(double value) {
+  if (!std::isfinite(value)) return "-";
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3g", value);
+  return buffer;
+}
+
+std::vector<std::string> method_order(const std::vector<Row>& rows) {
+  std::vector<std::string> order;
+  for (const Row& row : rows)
+    if (std::find(order.begin(), order.end(), row.method) == order.end())
+      order.push_back(row.method);
+  return order;
+}
+
+void summary_table(std::ostream& out, const std::vector<Row>& rows) {
+  out << "| method | holes | filled | closed | self-intersecting |";
+  for (const auto& measure : table_measures()) out << ' ' << std::get<1>(measure) << " |";
+  out << "\n|---|---|---|---|---|";
+  for (std::size_t i = 0; i < table_measures().size(); ++i) out << "---|";
+  out << '\n';
+  for (const std::string& method : method_order(rows)) {
+    std::size_t holes = 0, filled = 0, closed = 0, intersecting = 0;
+    for (const Row& row : rows) {
+      if (row.method != method) continue;
+      ++holes;
+      filled += row.filled;
+      closed += row.closed;
+      intersecting += row.self_intersecting;
+    }
+    out << "| " << method << " | " << holes << " | " << filled << " | " << closed << " | "
+        << intersecting << " |";
+    for (const auto& [key, label, larger_is_worse] : table_measures()) {
+      std::vector<double> values;
+      for (const Row& row : rows) {
+        if (row.method != method) continue;
+        const double v = row.values.at(key);
+        if (std::isfinite(v)) values.push_back(v);
+      }
+      double worst = std::numeric_limits<double>::quiet_NaN();
+      if (!values.empty())
+        worst = larger_is_worse ? *std::max_element(values.begin(), values.end())
+                                : *std::min_element(values.begin(), values.end());
+      out << ' ' << format(median(values)) << " / " << format(worst) << " |";
+    }
+    out << '\n';
+  }
+}
+
+// Median Einf/diag per mesh and radius, with the count of closed holes.
+void per_case_table(std::ostream& out, const std::vector<Row>& rows) {
+  const std::vector<std::string> methods = method_order(rows);
+  out << "| mesh | radius |";
+  for (const std::string& m : methods) out << ' ' << m << " |";
+  out << "\n|---|---|";
+  for (std::size_t i = 0; i < methods.size(); ++i) out << "---|";
+  out << '\n';
+  std::vector<std::pair<std::string, double>> cases;
+  for (const Row& row : rows)
+    if (std::find(cases.begin(), cases.end(), std::make_pair(row.mesh, row.radius)) == cases.end())
+      cases.emplace_back(row.mesh, row.radius);
+  for (const auto& [mesh, radius] : cases) {
+    out << "| " << mesh << " | " << format(radius) << " |";
+    for (const std::string& method : methods) {
+      std::vector<double> values;
+      std::size_t holes = 0, closed = 0;
+      for (const Row& row : rows) {
+        if (row.mesh != mesh || row.radius != radius || row.method != method) continue;
+        ++holes;
+        closed += row.closed;
+        if (std::isfinite(row.values.at("einf_rel"))) values.push_back(row.values.at("einf_rel"));
+      }
+      out << ' ' << format(median(values)) << " (" << closed << '/' << holes << ") |";
+    }
+    out << '\n';
+  }
+}
+
+// Why holes stayed open, per method: each distinct reason with its count.
+void failure_list(std::ostream& out, const std::vector<Row>& rows) {
+  std::map<std::pair<std::string, std::string>, std::size_t> reasons;
+  for (const Row& row : rows)
+    if (!row.closed)
+      ++reasons[{row.method,
+                 row.failure.empty() ? "not closed (no reason reported)" : row.failure}];
+  if (reasons.empty()) return;
+  out << "\nHoles not closed, by method and reason:\n\n";
+  for (const auto& [key, count] : reasons)
+    out << "- " << key.first << ": " << count << " x " << key.second << '\n';
+}
+
+std::string table_markdown(const std::vector<Row>& rows, const std::string& command,
+                           const std::vector<std::string>& warnings) {
+  std::ostringstream out;
+  out << "Command: `" << command << "`\n\n";
+  out << "Each cell: median / worst over every hole (worst = largest error, smallest quality). "
+         "Distances divided by the bounding-box diagonal. `filled`: every border edge of the hole "
+         "has a face; `closed`: filled and the patch has no border edge.\n\n";
+  summary_table(out, rows);
+  out << "\nMedian Einf/diag per mesh and hole radius (closed holes / holes):\n\n";
+  per_case_table(out, rows);
+  failure_list(out, rows);
+  for (const std::string& w : warnings) out << "\nNote: " << w << '\n';
+  return out.str();
+}
+
+std::string plot_script_path(const Options& options) {
+  if (!options.plot_script.empty()) return options.plot_script;
+  if (const char* env = std::getenv("MESH_REPAIR_PLOT_SCRIPT")) return env;
+#ifdef MESH_REPAIR_PLOT_SCRIPT
+  return MESH_REPAIR_PLOT_SCRIPT;
+#else
+  return {};
+#endif
+}
+
+// Plots are a convenience: a missing script or interpreter is a warning, never a failure.
+void make_plots(const Options& options) {
+  const std::string script = plot_script_path(options);
+  if (script.empty() || !std::filesystem::exists(script)) {
+    std::cerr << "mesh_repair bench: plot script not found, no plots (--plot-script)\n";
+    return;
+  }
+  // Debian's interpreter has python3-matplotlib even when another python3 comes first in PATH.
+  const std::string python =
+      std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+  const std::string command =
+      python + " '" + script + "' '" + options.out + "/results.jsonl' '" + options.out + "'";
+  if (std::system(command.c_str()) != 0)
+    std::cerr << "mesh_repair bench: the plot script failed; results and table are written\n";
+}
+
+std::string quoted_command(const std::vector<std::string>& args) {
+  std::string command = "mesh_repair bench";
+  for (const std::string& a : args) command += ' ' + a;
+  return command;
+}
+
+}  // namespace
+
+int run_bench(const std::vector<std::string>& args) {
+  const Options options = parse_options(args);
+  std::error_code error;
+  std::filesystem::create_directories(options.out, error);
+  if (error) throw Input_error(options.out + ": cannot be created: " + error.message());
+  Progress_bar bar(options.progress);
+  const std::size_t total =
+      options.cases.size() * options.radii.size() * options.seeds.size() * options.methods.size();
+  std::size_t done = 0;
+  std::ostringstream jsonl;
+  std::vector<Row> rows;
+  std::vector<std::string> warnings;
+  bar.start_step("bench holes");
+  for (const Bench_case& c : options.cases) {
+    Case_context context;
+    const Mesh base = load_case(c, context);
+    for (double radius : options.radii) {
+      for (unsigned int seed : options.seeds) {
+        Mesh holed = base;
+        const auto punched = MR::punch_holes(holed, MR::parameters::number_of_holes(options.holes)
+                                                        .hole_radius(radius)
+                                                        .hole_shape(options.shape)
+                                                        .random_seed(seed));
+        if (!punched.shortfall.empty()) {
+          warnings.push_back(c.name + ", radius " + format(radius) + ", seed " +
+                             std::to_string(seed) + ": " + punched.shortfall);
+          std::cerr << "\nmesh_repair bench: " << warnings.back() << '\n';
+        }
+        for (const Method& method : options.methods) {
+          run_method(holed, punched.holes, context, options, radius, seed, method, jsonl, rows);
+          if (!bar.progress(double(++done) / double(total))) return exit_incomplete;
+        }
+      }
+    }
+  }
+  bar.end_step("bench holes");
+  save_text(options.out + "/results.jsonl", jsonl.str());
+  save_text(options.out + "/table.md", table_markdown(rows, quoted_command(args), warnings));
+  if (options.plots) make_plots(options);
+  std::cout << rows.size() << " results in " << options.out << "/results.jsonl, table in "
+            << options.out << "/table.md\n";
+  return exit_success;
+}
+
+}  // namespace mesh_repair_cli

@@ -1,0 +1,182 @@
+// Copyright (c) 2026 Mesh_repair developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// mesh_repair fill: fills the holes of a mesh with one method of fill_holes.h, writes the mesh and
+// optionally a JSON report with one entry per hole.
+#include "commands.h"
+#include "common.h"
+
+#include <CGAL/Mesh_repair/fill_holes.h>
+#include <CGAL/Mesh_repair/io.h>
+
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <sstream>
+
+namespace mesh_repair_cli {
+
+const char* const fill_help =
+    "usage: mesh_repair fill IN -o OUT\n"
+    "           [--method advancing_front|liepa|shape_prediction|curvature_variation|auto]\n"
+    "           [--continuity 0|1|2] [--max-hole-edges N] [--max-hole-size F] [--seed S]\n"
+    "           [--no-ring-holes] [--report R.json] [--quiet]\n"
+    "           [--objective forces|force_variation] [--nodes free|free_and_contour]\n"
+    "           [--grid disc|refined_liepa] [--force-density uniform|inverse_length|cotangent]\n"
+    "           [--constraints FILE]\n"
+    "\n"
+    "Fills the holes of IN and writes OUT. Every patch is checked with exact predicates (closed,\n"
+    "no self-intersection with itself or its ring) and rolled back if it fails. A hole with\n"
+    "islands inside (ring hole) is bridged to them and filled as one region.\n"
+    "\n"
+    "  -o OUT               output mesh (OFF, OBJ, STL, PLY)\n"
+    "  --method M           advancing_front (thesis 4.4), liepa (CGAL), shape_prediction,\n"
+    "                       curvature_variation, or auto (default: advancing front, then Liepa)\n"
+    "  --continuity C       fairing continuity of liepa: 0, 1 (default) or 2\n"
+    "  --max-hole-edges N   leave holes with more border edges open\n"
+    "  --max-hole-size F    leave holes wider than F x bounding-box diagonal open\n"
+    "  --seed S             random seed of the randomised methods (default 0)\n"
+    "  --no-ring-holes      fill every border cycle on its own (no island detection)\n"
+    "  --report R.json      write one JSON entry per hole\n"
+    "  --quiet              no progress bar, no summary\n"
+    "curvature_variation (Pernot et al., doc/curvature_variation.md):\n"
+    "  --objective O        forces (eq. 8) or force_variation (eq. 9, default)\n"
+    "  --nodes N            nodes summed: free, or free_and_contour (default)\n"
+    "  --grid G             topological grid: disc or refined_liepa (default)\n"
+    "  --force-density D    uniform, inverse_length or cotangent (default)\n"
+    "  --constraints FILE   lines 'point X Y Z', 'polyline X1 Y1 Z1 X2 Y2 Z2 ...',\n"
+    "                       'spacing S', '# comment': points the patches must pass through\n"
+    "\n"
+    "Exit status: 0 every selected hole filled (and OUT closed when every hole was selected),\n"
+    "1 some hole left open, 2 bad usage or unreadable input.\n";
+
+namespace {
+
+CGAL::Mesh_repair::Fill_method parse_method(const std::string& name) {
+  CGAL::Mesh_repair::Fill_method method;
+  if (!CGAL::Mesh_repair::fill_method_from_string(name, method))
+    throw Input_error("unknown --method " + name + " (see --help)");
+  return method;
+}
+
+void print_summary(const CGAL::Mesh_repair::Fill_result& result, bool closed) {
+  namespace MR = CGAL::Mesh_repair;
+  std::cout << result.holes.size() << " hole(s): " << result.filled << " filled, " << result.failed
+            << " failed, " << result.skipped << " left open by selection\n";
+  for (std::size_t k = 0; k < result.holes.size(); ++k) {
+    const MR::Hole_fill_report& hole = result.holes[k];
+    std::cout << "  hole " << k << ": " << hole.border_edges << " border edges";
+    if (hole.island_cycles > 0) std::cout << ", " << hole.island_cycles << " island(s)";
+    if (hole.skipped) {
+      std::cout << ", not selected\n";
+      continue;
+    }
+    if (hole.filled) {
+      std::cout << ", filled by " << MR::to_string(hole.used) << " (" << hole.faces_created
+                << " faces)";
+    } else {
+      std::cout << ", FAILED: " << hole.failure;
+    }
+    for (const std::string& fallback : hole.fallbacks) std::cout << "; tried " << fallback;
+    std::cout << "\n";
+  }
+  std::cout << (closed ? "output is closed\n" : "output has borders\n");
+}
+
+struct Curvature_options {
+  CGAL::Mesh_repair::Curvature_objective objective =
+      CGAL::Mesh_repair::Curvature_objective::force_variation;
+  CGAL::Mesh_repair::Objective_nodes nodes =
+      CGAL::Mesh_repair::Objective_nodes::free_and_contour_nodes;
+  CGAL::Mesh_repair::Topological_grid grid = CGAL::Mesh_repair::Topological_grid::refined_liepa;
+  CGAL::Mesh_repair::Force_density density = CGAL::Mesh_repair::Force_density::cotangent;
+  CGAL::Mesh_repair::Fill_constraints<Point> constraints;
+};
+
+Curvature_options parse_curvature_options(const Arguments& arguments) {
+  namespace MR = CGAL::Mesh_repair;
+  Curvature_options options;
+  auto parse = [&](const char* option, auto& value, auto parser) {
+    if (arguments.has(option) && !parser(arguments.get(option), value))
+      throw Input_error(std::string("unknown ") + option + " " + arguments.get(option));
+  };
+  parse("--objective", options.objective, MR::curvature_objective_from_string);
+  parse("--nodes", options.nodes, MR::objective_nodes_from_string);
+  parse("--grid", options.grid, MR::topological_grid_from_string);
+  parse("--force-density", options.density, MR::force_density_from_string);
+  if (arguments.has("--constraints")) {
+    std::ifstream in(arguments.get("--constraints"));
+    if (!in) throw Input_error("cannot read --constraints " + arguments.get("--constraints"));
+    const std::string error = MR::read_fill_constraints(in, options.constraints);
+    if (!error.empty()) throw Input_error(arguments.get("--constraints") + ": " + error);
+  }
+  return options;
+}
+
+}  // namespace
+
+int run_fill(const std::vector<std::string>& args) {
+  namespace MR = CGAL::Mesh_repair;
+  Arguments arguments(args, {"--quiet", "--no-ring-holes"},
+                      {"-o", "--method", "--continuity", "--max-hole-edges", "--max-hole-size",
+                       "--seed", "--report", "--objective", "--nodes", "--grid", "--force-density",
+                       "--constraints"});
+  const std::string input = arguments.single_input(fill_help);
+  if (!arguments.has("-o")) throw Input_error("missing -o OUT; usage: " + std::string(fill_help));
+  const MR::Fill_method method = parse_method(arguments.get("--method", "auto"));
+  const long long continuity = arguments.get_int("--continuity", 1);
+  if (continuity < 0 || continuity > 2) throw Input_error("--continuity must be 0, 1 or 2");
+  const long long max_edges = arguments.get_int("--max-hole-edges", -1);
+  if (arguments.has("--max-hole-edges") && max_edges < 3)
+    throw Input_error("--max-hole-edges must be at least 3");
+  const double max_size = arguments.get_double("--max-hole-size", -1);
+  if (arguments.has("--max-hole-size") && !(max_size > 0))
+    throw Input_error("--max-hole-size must be positive");
+  const long long seed = arguments.get_int("--seed", 0);
+  if (seed < 0) throw Input_error("--seed must be non-negative");
+
+  const Curvature_options curvature = parse_curvature_options(arguments);
+
+  Mesh mesh;
+  MR::Soup_repair_report soup;
+  load_mesh(input, mesh, soup);
+  if (!CGAL::is_triangle_mesh(mesh)) throw Input_error(input + ": not a triangle mesh");
+
+  Progress_bar progress(progress_wanted(arguments));
+  const MR::Fill_result result = MR::fill_holes(
+      mesh, MR::parameters::fill_method(method)
+                .fairing_continuity(unsigned(continuity))
+                .max_hole_edges(max_edges < 0 ? std::numeric_limits<std::size_t>::max()
+                                              : std::size_t(max_edges))
+                .max_hole_size(max_size < 0 ? std::numeric_limits<double>::infinity() : max_size)
+                .random_seed(unsigned(seed))
+                .detect_ring_holes(!arguments.has("--no-ring-holes"))
+                .visitor(std::ref(progress))
+                .curvature_objective(curvature.objective)
+                .objective_nodes(curvature.nodes)
+                .topological_grid(curvature.grid)
+                .force_density(curvature.density)
+                .fill_constraints(curvature.constraints));
+  if (result.cancelled) throw Input_error("interrupted");
+
+  const bool closed = CGAL::is_closed(mesh);
+  save_mesh(arguments.get("-o"), mesh);
+  if (!arguments.has("--quiet")) print_summary(result, closed);
+  if (arguments.has("--report")) {
+    std::ostringstream text;
+    MR::internal::Json_writer json(text);
+    json.begin_object();
+    json.key("input").value(input);
+    json.key("output").value(arguments.get("-o"));
+    json.key("method").value(MR::to_string(method));
+    json.key("output_closed").value(closed);
+    json.key("result");
+    MR::write_json(json, result);
+    json.end_object();
+    text << "\n";
+    save_text(arguments.get("--report"), text.str());
+  }
+  const bool complete = result.all_filled() && (result.skipped > 0 || closed);
+  return complete ? exit_success : exit_incomplete;
+}
+
+}  // namespace mesh_repair_cli

@@ -1,0 +1,149 @@
+// Copyright (c) 2026 Mesh_repair developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_MESH_REPAIR_AUTOMATIC_REPAIR_H
+#define CGAL_MESH_REPAIR_AUTOMATIC_REPAIR_H
+
+/// \file automatic_repair.h
+/// The whole repair pipeline of thesis chapter 3 (Figures 3.2-3.3) in one call: gaps and
+/// overlaps before holes, then degeneracies, then holes, then verification. See
+/// doc/automatic_repair.md.
+
+#include <CGAL/Mesh_repair/internal/automatic_repair/repair_result.h>
+#include <CGAL/Mesh_repair/internal/automatic_repair/repair_steps.h>
+#include <CGAL/Mesh_repair/parameters.h>
+#include <CGAL/Mesh_repair/visitor.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <limits>
+
+namespace CGAL {
+namespace Mesh_repair {
+
+/// \ingroup Mesh_repair
+/// Repairs `pm` in the order of thesis Figure 3.2: exact stitching of coincident borders
+/// (CGAL), tolerance stitching of gaps and small overlaps with T-junction repair (thesis 4.2-4.3),
+/// removal of duplicated and overlapping coplanar faces, non-manifold vertices (CGAL), degenerate
+/// faces (CGAL) and slivers (thesis 4.5), optionally all but the largest component, hole-contour
+/// cleaning (Pernot 4), hole filling (one method per hole, with fallbacks; holes over the size
+/// limits are left open and reported), optionally CGAL's local removal of self-intersections,
+/// and a verification (valid, manifold, closed, self-intersections in and around the patches).
+///
+/// Every step is timed and counted in the result; nothing is removed without being counted.
+/// `pm` is valid after the call even when a step fails or the visitor cancels.
+///
+/// \tparam PolygonMesh a model of `MutableFaceGraph` and `FaceListGraph` with triangle faces
+/// \param pm the mesh to repair
+/// \param np optional named parameters:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{merge_tolerance}
+///     \cgalParamDescription{largest gap closed by stitching, model units}
+///     \cgalParamType{double}
+///     \cgalParamDefault{derived from the local border edge lengths (see `stitch_gaps`)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{fill_method}
+///     \cgalParamDescription{the hole-filling method}
+///     \cgalParamType{`Fill_method`}
+///     \cgalParamDefault{`Fill_method::automatic`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{fairing_continuity}
+///     \cgalParamDescription{continuity of Liepa fairing when that method is used}
+///     \cgalParamType{unsigned int}
+///     \cgalParamDefault{1}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{max_hole_size}
+///     \cgalParamDescription{holes whose border is larger than this fraction of the bounding-box
+///                           diagonal are left open and reported}
+///     \cgalParamType{double}
+///     \cgalParamDefault{no limit}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{max_hole_edges}
+///     \cgalParamDescription{holes with more border edges are left open and reported}
+///     \cgalParamType{std::size_t}
+///     \cgalParamDefault{no limit}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{detect_ring_holes}
+///     \cgalParamDescription{fill a hole and the islands inside it as one region}
+///     \cgalParamType{bool}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{keep_largest_component}
+///     \cgalParamDescription{remove every connected component but the largest (counted)}
+///     \cgalParamType{bool}
+///     \cgalParamDefault{`false`: every component is kept}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{clean_hole_contours}
+///     \cgalParamDescription{clean the hole contours (Pernot 4) before filling}
+///     \cgalParamType{bool}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{detect_self_intersections}
+///     \cgalParamDescription{count self-intersections of the input and the output}
+///     \cgalParamType{bool}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{repair_self_intersections}
+///     \cgalParamDescription{run CGAL's `experimental::remove_self_intersections` on the result}
+///     \cgalParamType{bool}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_threads}
+///     \cgalParamDescription{threads; in this version holes are filled one after the other
+///                           and only the self-intersection counts run in parallel (TBB, all
+///                           cores), see doc/automatic_repair.md}
+///     \cgalParamType{int}
+///     \cgalParamDefault{0: all cores}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{random_seed}
+///     \cgalParamDescription{seed of the randomised methods}
+///     \cgalParamType{unsigned int}
+///     \cgalParamDefault{0}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{visitor}
+///     \cgalParamDescription{progress and cancellation (`Default_visitor`), as `std::ref(v)`}
+///     \cgalParamDefault{`Default_visitor`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+/// \return every step with its counts and time, every hole, and what is left (`remaining`).
+template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
+Repair_result automatic_repair(PolygonMesh& pm,
+                               const NamedParameters& np = parameters::default_values()) {
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using parameters::get_parameter_reference;
+
+  auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                              get_property_map(CGAL::vertex_point, pm));
+  Default_visitor default_visitor;
+  auto&& visitor =
+      choose_parameter(get_parameter_reference(np, CGAL::internal_np::visitor), default_visitor);
+
+  internal::Repair_options options;
+  options.merge_tolerance = choose_parameter(get_parameter(np, internal_np::merge_tolerance_t{}), -1.0);
+  options.keep_largest_component =
+      choose_parameter(get_parameter(np, internal_np::keep_largest_component_t{}), false);
+  options.clean_hole_contours =
+      choose_parameter(get_parameter(np, internal_np::clean_hole_contours_t{}), true);
+  options.detect_self_intersections =
+      choose_parameter(get_parameter(np, internal_np::detect_self_intersections_t{}), true);
+  options.repair_self_intersections =
+      choose_parameter(get_parameter(np, internal_np::repair_self_intersections_t{}), false);
+
+  internal::Region_fill_options& fill = options.fill;
+  fill.method = choose_parameter(get_parameter(np, internal_np::fill_method_t{}), Fill_method::automatic);
+  fill.continuity = choose_parameter(get_parameter(np, CGAL::internal_np::fairing_continuity), 1u);
+  fill.seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0u);
+  fill.max_hole_size = choose_parameter(get_parameter(np, internal_np::max_hole_size_t{}),
+                                        std::numeric_limits<double>::infinity());
+  fill.max_hole_edges = choose_parameter(get_parameter(np, internal_np::max_hole_edges_t{}),
+                                         std::numeric_limits<std::size_t>::max());
+  fill.detect_ring_holes = choose_parameter(get_parameter(np, internal_np::detect_ring_holes_t{}), true);
+  fill.threads = choose_parameter(get_parameter(np, internal_np::number_of_threads_t{}), 0);
+
+  return internal::run_repair_pipeline(pm, vpm, options, visitor);
+}
+
+}  // namespace Mesh_repair
+}  // namespace CGAL
+
+#endif  // CGAL_MESH_REPAIR_AUTOMATIC_REPAIR_H

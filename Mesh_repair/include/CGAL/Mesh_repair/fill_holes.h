@@ -1,0 +1,589 @@
+// Copyright (c) 2026 Mesh_repair developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_MESH_REPAIR_FILL_HOLES_H
+#define CGAL_MESH_REPAIR_FILL_HOLES_H
+
+/// \file fill_holes.h
+/// The hole-filling dispatcher: `fill_hole` fills one hole, `fill_holes` every selected hole,
+/// with the method named by `fill_method`. Whatever the method, every patch is checked with exact
+/// predicates (no self-intersection with itself or its surrounding ring, the hole closed) and a
+/// patch that fails is rolled back and reported, never left in the mesh. Ring holes (a hole with
+/// island cycles inside) are detected and bridged into one simple hole first. See
+/// doc/fill_holes.md.
+
+#include <CGAL/Mesh_repair/hole_filling/fill_result.h>
+#include <CGAL/Mesh_repair/hole_filling/advancing_front.h>
+#include <CGAL/Mesh_repair/hole_filling/curvature_variation.h>
+#include <CGAL/Mesh_repair/hole_filling/liepa.h>
+#include <CGAL/Mesh_repair/hole_filling/shape_prediction.h>
+#include <CGAL/Mesh_repair/internal/hole_filling/border_cycles.h>
+#include <CGAL/Mesh_repair/internal/hole_filling/patch_check.h>
+#include <CGAL/Mesh_repair/internal/hole_filling/pinches.h>
+#include <CGAL/Mesh_repair/internal/hole_filling/ring_holes.h>
+#include <CGAL/Mesh_repair/internal/json.h>
+#include <CGAL/Mesh_repair/parameters.h>
+#include <CGAL/Mesh_repair/visitor.h>
+
+#include <chrono>
+#include <limits>
+#include <string>
+#include <unordered_set>
+#include <vector>
+
+namespace CGAL {
+namespace Mesh_repair {
+
+/// The `hole_filter` used when none is given: every hole is selected.
+struct Accept_every_hole {
+  bool operator()(const Hole_description&) const { return true; }
+};
+
+namespace internal {
+
+template <class halfedge_descriptor>
+using Hole_list = std::vector<halfedge_descriptor>;
+
+inline Hole_fill_report method_not_available(Fill_method method) {
+  Hole_fill_report report;
+  report.requested = report.used = method;
+  report.failure = std::string("method ") + to_string(method) + " is not available in this build";
+  return report;
+}
+
+// ---------------------------------------------------------------------------------------------
+// The method table. How to add a method:
+//  - A method that fills one hole at a time: write hole_filling/<method>.h with
+//      template <class PolygonMesh, class NamedParameters>
+//      Hole_fill_report fill_hole_<method>(PolygonMesh& pm, halfedge_descriptor border_halfedge,
+//                                          Fill_patch<PolygonMesh>& patch,
+//                                          const NamedParameters& np);
+//    include it at the top of this file and return its result from its case in `fill_one_hole`.
+//  - A method that solves all selected holes together (one sparse system): write
+//      template <class PolygonMesh, class NamedParameters>
+//      std::vector<Hole_fill_report> fill_holes_<method>(
+//          PolygonMesh& pm, const std::vector<halfedge_descriptor>& border_halfedges,
+//          std::vector<Fill_patch<PolygonMesh>>& patches, const NamedParameters& np);
+//    (`patches` has one entry per hole, reports in the same order), return it from its case in
+//    `fill_all_holes`, and return true for it in `fills_all_holes_at_once`.
+// The contract of a method: each hole is one border cycle (ring holes are already bridged); it
+// appends every face and vertex it creates to the hole's `Fill_patch`, even when it fails, and
+// may move only those new vertices and the hole's border vertices and their neighbours; it sets
+// `filled` when it believes the hole closed, `failure` otherwise. It neither checks nor rolls
+// back: the dispatcher verifies every patch (closed, no self-intersection, exact predicates)
+// and removes rejected ones. It reads its own parameters from `np`.
+// ---------------------------------------------------------------------------------------------
+
+/// True for the methods that take every selected hole at once.
+inline bool fills_all_holes_at_once(Fill_method method) {
+  return method == Fill_method::curvature_variation;
+}
+
+template <class PolygonMesh, class NamedParameters>
+std::vector<Hole_fill_report> fill_all_holes(
+    Fill_method method, PolygonMesh& pm,
+    const Hole_list<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor>& holes,
+    std::vector<Fill_patch<PolygonMesh>>& patches, const NamedParameters& np) {
+  (void)pm, (void)patches, (void)np;
+  switch (method) {
+    case Fill_method::curvature_variation:
+      return fill_holes_curvature_variation(pm, holes, patches, np).holes;
+    default:
+      break;
+  }
+  return std::vector<Hole_fill_report>(holes.size(), method_not_available(method));
+}
+
+template <class PolygonMesh, class NamedParameters>
+Hole_fill_report fill_one_hole(Fill_method method, PolygonMesh& pm,
+                               typename boost::graph_traits<PolygonMesh>::halfedge_descriptor h,
+                               Fill_patch<PolygonMesh>& patch, const NamedParameters& np) {
+  if (fills_all_holes_at_once(method)) {
+    std::vector<Fill_patch<PolygonMesh>> patches(1);
+    const auto reports = fill_all_holes(method, pm, {h}, patches, np);
+    patch = patches.front();
+    return reports.front();
+  }
+  switch (method) {
+    case Fill_method::advancing_front:
+      return fill_hole_advancing_front(pm, h, patch, np);
+    case Fill_method::liepa:
+      return fill_hole_liepa(pm, h, patch, np);
+    case Fill_method::shape_prediction:
+      return fill_hole_shape_prediction(pm, h, patch, np);
+    case Fill_method::curvature_variation:
+    case Fill_method::automatic:
+      break;
+  }
+  return method_not_available(method);
+}
+
+/// The methods `automatic` tries, in order, on each hole: the first patch that passes the check
+/// is kept. Advancing front is fast and matches the surrounding density; CGAL's Liepa
+/// triangulation succeeds on the holes where the front gets stuck (very non-planar borders).
+/// Shape prediction falls back to the advancing front, then Liepa (issue "Hole filling II").
+inline std::vector<Fill_method> shape_prediction_sequence() {
+  return {Fill_method::shape_prediction, Fill_method::advancing_front, Fill_method::liepa};
+}
+inline std::vector<Fill_method> automatic_sequence() {
+  return {Fill_method::advancing_front, Fill_method::liepa};
+}
+
+/// Fills the hole groups of one mesh: bridges, calls the methods, checks and rolls back.
+template <class PolygonMesh, class VertexPointMap, class GeomTraits, class NamedParameters>
+class Hole_filler {
+  using GT = boost::graph_traits<PolygonMesh>;
+  using halfedge_descriptor = typename GT::halfedge_descriptor;
+  using Group = Hole_group<halfedge_descriptor>;
+  using Patch = Fill_patch<PolygonMesh>;
+  using Transaction = Patch_transaction<PolygonMesh, VertexPointMap>;
+  using Clock = std::chrono::steady_clock;
+
+ public:
+  Hole_filler(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
+              bool check_self_intersections, const NamedParameters& np)
+      : pm_(pm), vpm_(vpm), traits_(traits), check_(check_self_intersections), np_(np) {}
+
+  Hole_description describe(const Group& group) const {
+    Hole_description d;
+    const Border_cycle_geometry g = cycle_geometry(group.outer, pm_, vpm_);
+    d.border_edges = g.edges;
+    d.perimeter = g.perimeter;
+    d.diameter = g.diameter;
+    d.island_cycles = group.islands.size();
+    for (halfedge_descriptor island : group.islands)
+      d.island_edges += cycle_halfedges(island, pm_).size();
+    return d;
+  }
+
+  /// Fills one group with `method` (`automatic`: each method of `automatic_sequence` in turn).
+  Hole_fill_report fill(const Group& group, Fill_method method, Patch& patch) {
+    const auto start = Clock::now();
+    const Border_cycle_geometry outer = cycle_geometry(group.outer, pm_, vpm_);
+    Hole_fill_report report;
+    if (method != Fill_method::automatic && method != Fill_method::shape_prediction) {
+      report = attempt(group, method, patch);
+    } else {
+      std::vector<std::string> fallbacks;
+      for (Fill_method candidate :
+           method == Fill_method::automatic ? automatic_sequence() : shape_prediction_sequence()) {
+        report = attempt(group, candidate, patch);
+        if (report.filled) break;
+        fallbacks.push_back(std::string(to_string(candidate)) + ": " + report.failure);
+      }
+      report.fallbacks = fallbacks;
+    }
+    report.requested = method;
+    report.border_edges = outer.edges;
+    report.perimeter = outer.perimeter;
+    report.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    return report;
+  }
+
+  /// Fills every group with a method that takes all holes at once.
+  std::vector<Hole_fill_report> fill_together(const std::vector<Group>& groups, Fill_method method,
+                                              std::vector<Patch>& patches) {
+    const auto start = Clock::now();
+    std::vector<Transaction> transactions;
+    std::vector<std::vector<Pinch_weld<PolygonMesh>>> welds(groups.size());
+    std::vector<Hole_fill_report> reports(groups.size());
+    std::vector<halfedge_descriptor> holes;
+    std::vector<std::size_t> hole_group;
+    std::vector<Border_cycle_geometry> outer;
+    for (const Group& group : groups) outer.push_back(cycle_geometry(group.outer, pm_, vpm_));
+    for (std::size_t k = 0; k < groups.size(); ++k) {
+      transactions.emplace_back(pm_, vpm_, all_cycles(groups[k]));
+      const halfedge_descriptor h = bridge(groups[k], patches[k], reports[k]);
+      if (h == GT::null_halfedge()) {
+        transactions.back().rollback(patches[k]);
+        continue;
+      }
+      for (halfedge_descriptor cycle : weld_pinches(pm_, vpm_, h, welds[k])) {
+        holes.push_back(cycle);
+        hole_group.push_back(k);
+      }
+    }
+    std::vector<Patch> method_patches(holes.size());
+    const std::vector<Hole_fill_report> method_reports =
+        fill_all_holes(method, pm_, holes, method_patches, np_);
+    const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    std::vector<Hole_fill_report> combined(groups.size());
+    std::vector<bool> attempted(groups.size(), false);
+    for (std::size_t j = 0; j < holes.size(); ++j) {
+      const std::size_t k = hole_group[j];
+      append(patches[k], method_patches[j]);
+      Hole_fill_report& report = combined[k];
+      if (!attempted[k]) report.filled = true;
+      attempted[k] = true;
+      report.notes.insert(report.notes.end(), method_reports[j].notes.begin(),
+                          method_reports[j].notes.end());
+      if (!method_reports[j].filled && report.filled) {
+        report.filled = false;
+        report.failure = method_reports[j].failure;
+      }
+    }
+    std::size_t attempted_count = 0;
+    for (std::size_t k = 0; k < groups.size(); ++k) attempted_count += attempted[k] ? 1 : 0;
+    for (std::size_t k = 0; k < groups.size(); ++k) {
+      if (!attempted[k]) continue;
+      combined[k].used = method;
+      reports[k] = verify(combined[k], groups[k], patches[k], transactions[k], welds[k]);
+      reports[k].seconds = seconds / double(attempted_count);
+    }
+    for (std::size_t k = 0; k < groups.size(); ++k) {
+      reports[k].requested = method;
+      reports[k].border_edges = outer[k].edges;
+      reports[k].perimeter = outer[k].perimeter;
+    }
+    return reports;
+  }
+
+ private:
+  std::vector<halfedge_descriptor> all_cycles(const Group& group) const {
+    std::vector<halfedge_descriptor> cycles{group.outer};
+    cycles.insert(cycles.end(), group.islands.begin(), group.islands.end());
+    return cycles;
+  }
+
+  static void append(Patch& to, const Patch& from) {
+    to.faces.insert(to.faces.end(), from.faces.begin(), from.faces.end());
+    to.vertices.insert(to.vertices.end(), from.vertices.begin(), from.vertices.end());
+  }
+
+  /// Bridges the islands of `group` into its outer cycle; returns a border halfedge of the
+  /// resulting single cycle, or null (with `report.failure`) when an island cannot be bridged.
+  halfedge_descriptor bridge(const Group& group, Patch& patch, Hole_fill_report& report) {
+    halfedge_descriptor h = group.outer;
+    report.island_cycles = group.islands.size();
+    for (halfedge_descriptor island : group.islands) {
+      const double edge_length = cycle_geometry(h, pm_, vpm_).mean_edge_length;
+      h = bridge_island(pm_, vpm_, h, island, edge_length, patch);
+      if (h == GT::null_halfedge()) {
+        report.failure = "no valid bridge between the hole and one of its islands";
+        return h;
+      }
+    }
+    return h;
+  }
+
+  Hole_fill_report attempt(const Group& group, Fill_method method, Patch& patch) {
+    Transaction transaction(pm_, vpm_, all_cycles(group));
+    Hole_fill_report report;
+    report.requested = report.used = method;
+    const halfedge_descriptor h = bridge(group, patch, report);
+    if (h == GT::null_halfedge()) {
+      transaction.rollback(patch);
+      return report;
+    }
+    std::vector<Pinch_weld<PolygonMesh>> welds;
+    const std::vector<halfedge_descriptor> cycles = weld_pinches(pm_, vpm_, h, welds);
+    report.filled = true;
+    for (halfedge_descriptor cycle : cycles) {
+      Patch method_patch;
+      const Hole_fill_report part = fill_one_hole(method, pm_, cycle, method_patch, np_);
+      append(patch, method_patch);
+      report.notes.insert(report.notes.end(), part.notes.begin(), part.notes.end());
+      if (!part.filled) {
+        report.filled = false;
+        report.failure = part.failure;
+        break;
+      }
+    }
+    return verify(report, group, patch, transaction, welds);
+  }
+
+  /// Keeps the patch when the method filled the hole, the hole is closed and the patch meets
+  /// neither itself nor its ring; otherwise rolls it back. Completes the report's counts.
+  Hole_fill_report verify(Hole_fill_report report, const Group& group, Patch& patch,
+                          Transaction& transaction, std::vector<Pinch_weld<PolygonMesh>>& welds) {
+    report.island_cycles = group.islands.size();
+    if (report.filled && patch.faces.empty()) {
+      report.filled = false;
+      report.failure = "the method created no face";
+    }
+    if (report.filled && !closed(patch)) {
+      report.filled = false;
+      report.failure = "the patch leaves border edges open";
+    }
+    if (report.filled && check_) {
+      const std::size_t pairs = patch_intersections(pm_, patch, vpm_, traits_);
+      if (pairs > 0) {
+        report.filled = false;
+        report.failure =
+            "the patch self-intersects (" + std::to_string(pairs) + " pairs of intersecting faces)";
+      }
+    }
+    if (!report.filled) {
+      if (report.failure.empty()) report.failure = "the method reported failure";
+      transaction.rollback(patch);
+      unweld_pinches(pm_, welds);
+    } else if (!welds.empty()) {
+      report.notes.push_back("welded " + std::to_string(welds.size()) +
+                             " pinch(es) where the border touched itself");
+      commit_pinches(pm_, welds);
+    }
+    report.faces_created = patch.faces.size();
+    report.vertices_created = patch.vertices.size();
+    return report;
+  }
+
+  bool closed(const Patch& patch) const {
+    for (auto f : patch.faces) {
+      for (halfedge_descriptor c : halfedges_around_face(halfedge(f, pm_), pm_)) {
+        if (is_border(opposite(c, pm_), pm_)) return false;
+      }
+    }
+    return true;
+  }
+
+  PolygonMesh& pm_;
+  VertexPointMap vpm_;
+  GeomTraits traits_;
+  bool check_;
+  const NamedParameters& np_;
+};
+
+/// Fills `groups` (all selected unless `select` says otherwise); reports in group order.
+template <class PolygonMesh, class NamedParameters>
+Fill_result fill_hole_groups(
+    PolygonMesh& pm,
+    const std::vector<Hole_group<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor>>&
+        groups,
+    std::vector<Fill_patch<PolygonMesh>>& patches, const NamedParameters& np,
+    bool apply_selection = true) {
+  using CGAL::parameters::get_parameter_reference;
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using GeomTraits = typename CGAL::GetGeomTraits<PolygonMesh, NamedParameters>::type;
+
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_property_map(CGAL::vertex_point, pm));
+  const GeomTraits traits =
+      choose_parameter<GeomTraits>(get_parameter(np, CGAL::internal_np::geom_traits));
+  const Fill_method method =
+      choose_parameter(get_parameter(np, internal_np::fill_method_t()), Fill_method::automatic);
+  const std::size_t max_edges = choose_parameter(get_parameter(np, internal_np::max_hole_edges_t()),
+                                                 std::numeric_limits<std::size_t>::max());
+  const double max_size = choose_parameter(get_parameter(np, internal_np::max_hole_size_t()),
+                                           std::numeric_limits<double>::infinity());
+  const auto filter =
+      choose_parameter(get_parameter(np, internal_np::hole_filter_t()), Accept_every_hole());
+  const bool check =
+      choose_parameter(get_parameter(np, internal_np::check_self_intersections_t()), true);
+  Default_visitor default_visitor;
+  auto&& visitor =
+      choose_parameter(get_parameter_reference(np, CGAL::internal_np::visitor), default_visitor);
+
+  using Filler =
+      Hole_filler<PolygonMesh, std::remove_const_t<decltype(vpm)>, GeomTraits, NamedParameters>;
+  Filler filler(pm, vpm, traits, check, np);
+  const double diagonal = mesh_bbox_diagonal(pm, vpm);
+
+  Fill_result result;
+  result.holes.resize(groups.size());
+  patches.assign(groups.size(), Fill_patch<PolygonMesh>());
+  std::vector<std::size_t> selected;
+  for (std::size_t k = 0; k < groups.size(); ++k) {
+    Hole_description d = filler.describe(groups[k]);
+    d.relative_size = diagonal > 0 ? d.diameter / diagonal : 0;
+    Hole_fill_report& report = result.holes[k];
+    report.requested = report.used = method;
+    report.border_edges = d.border_edges;
+    report.island_cycles = d.island_cycles;
+    report.perimeter = d.perimeter;
+    const bool selected_by_size =
+        d.border_edges + d.island_edges <= max_edges && d.relative_size <= max_size && filter(d);
+    if (apply_selection && !selected_by_size) {
+      report.skipped = true;
+      report.failure = "not selected";
+    } else {
+      selected.push_back(k);
+    }
+  }
+
+  visitor.start_step("fill holes");
+  if (fills_all_holes_at_once(method)) {
+    std::vector<Hole_group<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor>> chosen;
+    for (std::size_t k : selected) chosen.push_back(groups[k]);
+    std::vector<Fill_patch<PolygonMesh>> chosen_patches(chosen.size());
+    const auto reports = filler.fill_together(chosen, method, chosen_patches);
+    for (std::size_t j = 0; j < selected.size(); ++j) {
+      result.holes[selected[j]] = reports[j];
+      patches[selected[j]] = chosen_patches[j];
+    }
+    visitor.progress(1.0);
+  } else {
+    for (std::size_t j = 0; j < selected.size(); ++j) {
+      if (!visitor.progress(double(j) / double(selected.size()))) {
+        result.cancelled = true;
+        for (std::size_t rest = j; rest < selected.size(); ++rest) {
+          result.holes[selected[rest]].skipped = true;
+          result.holes[selected[rest]].failure = "cancelled";
+        }
+        break;
+      }
+      result.holes[selected[j]] = filler.fill(groups[selected[j]], method, patches[selected[j]]);
+    }
+    if (!result.cancelled) visitor.progress(1.0);
+  }
+  visitor.end_step("fill holes");
+
+  for (const Hole_fill_report& report : result.holes) {
+    if (report.skipped) {
+      ++result.skipped;
+    } else if (report.filled) {
+      ++result.filled;
+    } else {
+      ++result.failed;
+    }
+  }
+  return result;
+}
+
+template <class PolygonMesh, class NamedParameters>
+std::vector<Hole_group<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor>> hole_groups(
+    const PolygonMesh& pm, const NamedParameters& np) {
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, pm));
+  const bool detect = choose_parameter(get_parameter(np, internal_np::detect_ring_holes_t()), true);
+  return group_ring_holes(pm, vpm, border_cycles(pm), detect);
+}
+
+}  // namespace internal
+
+/// Fills every selected hole of `pm` with the method `fill_method`, checking every patch with
+/// exact predicates and rolling back the patches that fail. A hole whose region contains island
+/// border cycles (a ring hole) is bridged to them and filled as one region.
+///
+/// \tparam PolygonMesh a model of `MutableFaceGraph` and `FaceListGraph`, triangulated
+/// \param pm the mesh; `CGAL::is_valid_polygon_mesh(pm)` holds after the call
+/// \param patches (overload) receives, per hole of the result, the faces and vertices kept
+/// \param np named parameters:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{fill_method}
+///     \cgalParamDescription{the method (`Fill_method`); `automatic` tries advancing front,
+///       then CGAL's Liepa, per hole, and records the fallbacks}
+///     \cgalParamDefault{`Fill_method::automatic`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{max_hole_edges}
+///     \cgalParamDescription{holes with more border edges (islands included) are left open}
+///     \cgalParamType{std::size_t} \cgalParamDefault{no limit}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{max_hole_size}
+///     \cgalParamDescription{holes whose border's bounding-box diagonal exceeds this fraction of
+///       the mesh's bounding-box diagonal are left open}
+///     \cgalParamType{double} \cgalParamDefault{no limit}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{hole_filter}
+///     \cgalParamDescription{predicate `bool(const Hole_description&)`; holes it rejects are
+///       left open}
+///     \cgalParamDefault{`Accept_every_hole()`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{detect_ring_holes}
+///     \cgalParamDescription{find island cycles inside holes and fill each such ring hole as one
+///       region; when false every border cycle is a hole of its own}
+///     \cgalParamType{bool} \cgalParamDefault{true}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{check_self_intersections}
+///     \cgalParamDescription{check every patch and its ring with CGAL's exact
+///       `self_intersections`; only turn off for measurements}
+///     \cgalParamType{bool} \cgalParamDefault{true}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{visitor}
+///     \cgalParamDescription{progress and cancellation, see `Default_visitor`; one step
+///       "fill holes", cancellation takes effect between holes}
+///     \cgalParamDefault{`Default_visitor()`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map} \cgalParamDefault{`get(CGAL::vertex_point, pm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{geom_traits} \cgalParamDefault{deduced from the point type}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{(method parameters)}
+///     \cgalParamDescription{passed on to the method: see hole_filling/advancing_front.h,
+///       hole_filling/liepa.h (`fairing_continuity`) and the other methods' headers}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+/// \returns one report per hole (ring holes count once), in border-cycle order.
+template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
+Fill_result fill_holes(PolygonMesh& pm, std::vector<Fill_patch<PolygonMesh>>& patches,
+                       const NamedParameters& np = parameters::default_values()) {
+  return internal::fill_hole_groups(pm, internal::hole_groups(pm, np), patches, np);
+}
+
+template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
+Fill_result fill_holes(PolygonMesh& pm, const NamedParameters& np = parameters::default_values()) {
+  std::vector<Fill_patch<PolygonMesh>> patches;
+  return fill_holes(pm, patches, np);
+}
+
+/// Fills the hole of the border halfedge `border_halfedge` (with its islands, when it is a ring
+/// hole and `detect_ring_holes` is true) like `fill_holes`, ignoring the selection parameters.
+/// `patch` (overload) receives the faces and vertices kept.
+/// \pre `is_border(border_halfedge, pm)`
+template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
+Hole_fill_report fill_hole(
+    PolygonMesh& pm, typename boost::graph_traits<PolygonMesh>::halfedge_descriptor border_halfedge,
+    Fill_patch<PolygonMesh>& patch, const NamedParameters& np = parameters::default_values()) {
+  CGAL_precondition(is_border(border_halfedge, pm));
+  using halfedge_descriptor = typename boost::graph_traits<PolygonMesh>::halfedge_descriptor;
+  std::unordered_set<halfedge_descriptor> cycle;
+  for (halfedge_descriptor h : halfedges_around_face(border_halfedge, pm)) cycle.insert(h);
+  internal::Hole_group<halfedge_descriptor> group{border_halfedge, {}};
+  for (const auto& candidate : internal::hole_groups(pm, np)) {
+    if (cycle.count(candidate.outer)) group.islands = candidate.islands;
+  }
+  std::vector<Fill_patch<PolygonMesh>> patches;
+  Fill_result result = internal::fill_hole_groups(pm, {group}, patches, np, false);
+  patch = patches.front();
+  return result.holes.front();
+}
+
+template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
+Hole_fill_report fill_hole(
+    PolygonMesh& pm, typename boost::graph_traits<PolygonMesh>::halfedge_descriptor border_halfedge,
+    const NamedParameters& np = parameters::default_values()) {
+  Fill_patch<PolygonMesh> patch;
+  return fill_hole(pm, border_halfedge, patch, np);
+}
+
+/// Writes one hole's report as a JSON object.
+inline void write_json(internal::Json_writer& json, const Hole_fill_report& report) {
+  json.begin_object();
+  json.key("border_edges").value(report.border_edges);
+  json.key("island_cycles").value(report.island_cycles);
+  json.key("perimeter").value(report.perimeter);
+  json.key("requested").value(to_string(report.requested));
+  json.key("used").value(to_string(report.used));
+  json.key("filled").value(report.filled);
+  json.key("skipped").value(report.skipped);
+  json.key("failure").value(report.failure);
+  json.key("fallbacks").begin_array();
+  for (const std::string& fallback : report.fallbacks) json.value(fallback);
+  json.end_array();
+  json.key("notes").begin_array();
+  for (const std::string& note : report.notes) json.value(note);
+  json.end_array();
+  json.key("faces_created").value(report.faces_created);
+  json.key("vertices_created").value(report.vertices_created);
+  json.key("seconds").value(report.seconds);
+  json.end_object();
+}
+
+/// Writes the result of `fill_holes` as a JSON object with one entry per hole.
+inline void write_json(internal::Json_writer& json, const Fill_result& result) {
+  json.begin_object();
+  json.key("filled").value(result.filled);
+  json.key("failed").value(result.failed);
+  json.key("skipped").value(result.skipped);
+  json.key("cancelled").value(result.cancelled);
+  json.key("holes").begin_array();
+  for (const Hole_fill_report& report : result.holes) write_json(json, report);
+  json.end_array();
+  json.end_object();
+}
+
+}  // namespace Mesh_repair
+}  // namespace CGAL
+
+#endif  // CGAL_MESH_REPAIR_FILL_HOLES_H

@@ -1,0 +1,80 @@
+// Copyright (c) 2026 Mesh_repair developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_MESH_REPAIR_HOLE_FILLING_LIEPA_H
+#define CGAL_MESH_REPAIR_HOLE_FILLING_LIEPA_H
+
+/// \file liepa.h
+/// CGAL's `triangulate_refine_and_fair_hole` (Liepa 2003: minimum-weight triangulation of the
+/// border polygon, refinement to the border's density, fairing of the new vertices) behind the
+/// interface shared by every hole-filling method, so it is called and measured like the others.
+/// See doc/liepa.md.
+
+#include <CGAL/Mesh_repair/hole_filling/fill_result.h>
+#include <CGAL/Mesh_repair/parameters.h>
+
+#include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
+
+#include <iterator>
+#include <string>
+
+namespace CGAL {
+namespace Mesh_repair {
+
+/// Fills the hole bounded by the border halfedge `border_halfedge` with CGAL's
+/// `triangulate_refine_and_fair_hole`. The faces and vertices it creates are appended to
+/// `patch`. Only `CGAL::Mesh_repair::fill_hole()` and `fill_holes()` check and roll back
+/// patches: call those unless you check the patch yourself.
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{fairing_continuity}
+///     \cgalParamDescription{tangential continuity of the faired patch with the surrounding
+///       mesh: 0 (C0, membrane), 1 (C1, thin plate) or 2 (C2)}
+///     \cgalParamType{unsigned int}
+///     \cgalParamDefault{1}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map} \cgalParamDefault{`get(CGAL::vertex_point, pm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{geom_traits} \cgalParamDefault{deduced from the point type}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// The report says `filled` when CGAL produced a triangulation; a failed fairing (singular
+/// system) keeps the unfaired refined patch and is recorded in `notes`.
+template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
+Hole_fill_report fill_hole_liepa(
+    PolygonMesh& pm, typename boost::graph_traits<PolygonMesh>::halfedge_descriptor border_halfedge,
+    Fill_patch<PolygonMesh>& patch, const NamedParameters& np = parameters::default_values()) {
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using GeomTraits = typename CGAL::GetGeomTraits<PolygonMesh, NamedParameters>::type;
+
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_property_map(CGAL::vertex_point, pm));
+  const GeomTraits traits =
+      choose_parameter<GeomTraits>(get_parameter(np, CGAL::internal_np::geom_traits));
+  const unsigned int continuity =
+      choose_parameter(get_parameter(np, CGAL::internal_np::fairing_continuity), 1u);
+
+  Hole_fill_report report;
+  report.requested = report.used = Fill_method::liepa;
+  if (continuity > 2) {
+    report.failure = "fairing_continuity must be 0, 1 or 2";
+    return report;
+  }
+  // A fresh pack: our own `visitor` (progress) is not CGAL's hole-filling visitor.
+  const auto result = CGAL::Polygon_mesh_processing::triangulate_refine_and_fair_hole(
+      pm, border_halfedge, std::back_inserter(patch.faces), std::back_inserter(patch.vertices),
+      CGAL::parameters::vertex_point_map(vpm).geom_traits(traits).fairing_continuity(continuity));
+  report.faces_created = patch.faces.size();
+  report.vertices_created = patch.vertices.size();
+  report.filled = !patch.faces.empty();
+  if (!report.filled) report.failure = "CGAL found no triangulation of the border polygon";
+  if (report.filled && !std::get<0>(result) && !patch.vertices.empty())
+    report.notes.push_back("fairing failed (singular system); the refined patch is not faired");
+  return report;
+}
+
+}  // namespace Mesh_repair
+}  // namespace CGAL
+
+#endif  // CGAL_MESH_REPAIR_HOLE_FILLING_LIEPA_H

@@ -1,0 +1,117 @@
+// Copyright (c) 2026 Mesh_repair developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_MESH_REPAIR_HOLE_FILLING_SHAPE_PREDICTION_H
+#define CGAL_MESH_REPAIR_HOLE_FILLING_SHAPE_PREDICTION_H
+
+/// \file shape_prediction.h
+/// High-fidelity hole filling with shape prediction (thesis chapter 5): boundary smoothing
+/// (eq. 5.1), rough-set simplification (5.3.2), genetic-algorithm initial triangulation (5.4),
+/// quartic triangular Bezier patches (5.5), advancing front with every new node mapped onto the
+/// patches and smoothing guided by them (5.6). See doc/shape_prediction.md.
+
+#include <CGAL/Mesh_repair/hole_filling/fill_result.h>
+#include <CGAL/Mesh_repair/internal/hole_filling/advancing_front_core.h>
+#include <CGAL/Mesh_repair/internal/shape_prediction/front_on_patches.h>
+#include <CGAL/Mesh_repair/internal/shape_prediction/hole_polygon.h>
+#include <CGAL/Mesh_repair/internal/shape_prediction/shape_estimate.h>
+#include <CGAL/Mesh_repair/parameters.h>
+#include <CGAL/Mesh_repair/visitor.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Mesh_repair {
+
+/// Fills the hole bounded by the border halfedge `border_halfedge` by shape prediction. The
+/// faces and vertices it creates are appended to `patch`; the border vertices do not move. Only
+/// `CGAL::Mesh_repair::fill_hole()` and `fill_holes()` check and roll back patches (and fall back
+/// to `advancing_front`, then `liepa`, when this method fails): call those unless you check the
+/// patch yourself.
+///
+/// \tparam PolygonMesh a model of `MutableFaceGraph` and `FaceListGraph`, triangulated
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{random_seed}
+///     \cgalParamDescription{seed of the genetic algorithm; the fill is reproducible for it}
+///     \cgalParamType{unsigned int} \cgalParamDefault{0}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{population_size}
+///     \cgalParamDescription{GA population} \cgalParamType{int} \cgalParamDefault{30}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{max_generations}
+///     \cgalParamDescription{GA stops after this many generations (thesis: 500)}
+///     \cgalParamType{int} \cgalParamDefault{500}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{target_fitness}
+///     \cgalParamDescription{GA stops once the best total fitness f_fit of eq. 5.13 reaches it}
+///     \cgalParamType{double} \cgalParamDefault{0.7}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{fitness_weights}
+///     \cgalParamDescription{w_a, w_b, w_c of eq. 5.13 (internal smoothness, boundary
+///       smoothness, deviation factors)}
+///     \cgalParamType{std::array<double, 3>} \cgalParamDefault{{1/3, 1/3, 1/3}}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{boundary_smoothing_iterations}
+///     \cgalParamDescription{passes of eq. 5.1 on a copy of the border; the smoothed positions
+///       only guide the GA triangulation}
+///     \cgalParamType{int} \cgalParamDefault{1}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{use_rough_set_simplification}
+///     \cgalParamDescription{only the essential nodes of 5.3.2 enter the GA; the others are
+///       put back before the patches are built}
+///     \cgalParamType{bool} \cgalParamDefault{true}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{curvature_flow_iterations}
+///     \cgalParamDescription{passes of umbrella (uniform mean-curvature) flow of the new
+///       nodes, each move mapped back onto the patches}
+///     \cgalParamType{int} \cgalParamDefault{5}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map} \cgalParamDefault{`get(CGAL::vertex_point, pm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{geom_traits} \cgalParamDefault{deduced from the point type}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \returns the report: `filled` when the front closed and every triangle was added; otherwise
+/// `failure` says which stage failed.
+template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
+Hole_fill_report fill_hole_shape_prediction(
+    PolygonMesh& pm, typename boost::graph_traits<PolygonMesh>::halfedge_descriptor border_halfedge,
+    Fill_patch<PolygonMesh>& patch, const NamedParameters& np = parameters::default_values()) {
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using GeomTraits = typename CGAL::GetGeomTraits<PolygonMesh, NamedParameters>::type;
+  namespace sp = internal::shape_prediction;
+
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_property_map(CGAL::vertex_point, pm));
+  sp::Shape_estimate_options options;
+  options.ga.random_seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0u);
+  options.ga.population_size =
+      choose_parameter(get_parameter(np, internal_np::population_size_t()), 30);
+  options.ga.max_generations =
+      choose_parameter(get_parameter(np, internal_np::max_generations_t()), 500);
+  options.ga.target_fitness =
+      choose_parameter(get_parameter(np, internal_np::target_fitness_t()), 0.7);
+  const std::array<double, 3> weights =
+      choose_parameter(get_parameter(np, internal_np::fitness_weights_t()),
+                       std::array<double, 3>{1.0 / 3, 1.0 / 3, 1.0 / 3});
+  options.fitness.w_internal = weights[0];
+  options.fitness.w_boundary = weights[1];
+  options.fitness.w_deviation = weights[2];
+  options.smoothing_iterations =
+      choose_parameter(get_parameter(np, internal_np::boundary_smoothing_iterations_t()), 1);
+  options.simplify =
+      choose_parameter(get_parameter(np, internal_np::use_rough_set_simplification_t()), true);
+  const int flow_iterations =
+      choose_parameter(get_parameter(np, internal_np::curvature_flow_iterations_t()), 5);
+
+  return internal::shape_prediction::fill_hole<GeomTraits>(pm, vpm, border_halfedge, patch, options,
+                                                           flow_iterations);
+}
+
+}  // namespace Mesh_repair
+}  // namespace CGAL
+
+#endif  // CGAL_MESH_REPAIR_HOLE_FILLING_SHAPE_PREDICTION_H

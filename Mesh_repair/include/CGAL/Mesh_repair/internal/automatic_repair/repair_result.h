@@ -1,0 +1,130 @@
+// Copyright (c) 2026 Mesh_repair developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_MESH_REPAIR_INTERNAL_AUTOMATIC_REPAIR_REPAIR_RESULT_H
+#define CGAL_MESH_REPAIR_INTERNAL_AUTOMATIC_REPAIR_REPAIR_RESULT_H
+
+#include <CGAL/Mesh_repair/fill_holes.h>
+#include <CGAL/Mesh_repair/internal/json.h>
+
+#include <chrono>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Mesh_repair {
+
+/// One step of `automatic_repair`: what it changed (named counts), its time, and the operator's
+/// own result as JSON.
+struct Repair_step_report {
+  std::string name;
+  double seconds = 0;
+  std::vector<std::pair<std::string, double>> counts;
+  std::vector<std::string> notes;
+  std::string details_json;  ///< the operator's result object, or empty
+
+  double count(const std::string& key) const {
+    for (const auto& c : counts)
+      if (c.first == key) return c.second;
+    return 0;
+  }
+};
+
+/// What `automatic_repair` did and what is left.
+struct Repair_result {
+  std::vector<Repair_step_report> steps;
+  Fill_result holes;                     ///< every hole, filled or not, with its method
+  std::size_t holes_too_large = 0;       ///< left open by `max_hole_size` / `max_hole_edges`
+  std::size_t input_vertices = 0, input_faces = 0;
+  std::size_t output_vertices = 0, output_faces = 0;
+  std::size_t components_removed = 0;    ///< only with `keep_largest_component`
+  std::size_t faces_removed_with_components = 0;
+  std::size_t self_intersections_input = 0;   ///< pairs, when detection was asked
+  std::size_t self_intersections_output = 0;  ///< pairs, when detection was asked
+  std::size_t self_intersections_in_patches = 0;  ///< pairs involving a patch or its ring
+  std::size_t border_cycles_left = 0;
+  bool valid = false, closed = false, manifold = false;
+  bool self_intersections_checked = false;
+  bool cancelled = false;
+  std::vector<std::string> remaining;  ///< what is left, one line each; empty when complete
+
+  /// True when the mesh is valid and every requested repair was done.
+  bool complete() const { return valid && remaining.empty() && !cancelled; }
+};
+
+namespace internal {
+
+/// Times a step and records it in a result.
+class Step_timer {
+ public:
+  Step_timer(Repair_result& result, const char* name) : result_(result) {
+    step_.name = name;
+    start_ = std::chrono::steady_clock::now();
+  }
+  ~Step_timer() {
+    step_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    result_.steps.push_back(std::move(step_));
+  }
+  Repair_step_report& step() { return step_; }
+  void count(const std::string& key, double value) { step_.counts.emplace_back(key, value); }
+  template <class Result>
+  void details(const Result& r) {
+    std::ostringstream out;
+    Json_writer json(out, false);
+    write_json(json, r);
+    step_.details_json = out.str();
+    if (!step_.details_json.empty() && step_.details_json.back() == '\n') step_.details_json.pop_back();
+  }
+
+ private:
+  Repair_result& result_;
+  Repair_step_report step_;
+  std::chrono::steady_clock::time_point start_;
+};
+
+}  // namespace internal
+
+inline void write_json(internal::Json_writer& json, const Repair_result& r) {
+  json.begin_object();
+  json.field("complete", r.complete())
+      .field("valid", r.valid)
+      .field("closed", r.closed)
+      .field("manifold", r.manifold)
+      .field("cancelled", r.cancelled)
+      .field("input_vertices", r.input_vertices)
+      .field("input_faces", r.input_faces)
+      .field("output_vertices", r.output_vertices)
+      .field("output_faces", r.output_faces)
+      .field("components_removed", r.components_removed)
+      .field("faces_removed_with_components", r.faces_removed_with_components)
+      .field("border_cycles_left", r.border_cycles_left)
+      .field("holes_filled", r.holes.filled)
+      .field("holes_failed", r.holes.failed)
+      .field("holes_too_large", r.holes_too_large)
+      .field("self_intersections_checked", r.self_intersections_checked)
+      .field("self_intersections_input", r.self_intersections_input)
+      .field("self_intersections_output", r.self_intersections_output)
+      .field("self_intersections_in_patches", r.self_intersections_in_patches)
+      .array("remaining", r.remaining);
+  json.key("steps").begin_array();
+  for (const auto& s : r.steps) {
+    json.begin_object().field("name", s.name).field("seconds", s.seconds);
+    json.key("counts").begin_object();
+    for (const auto& c : s.counts) json.field(c.first, c.second);
+    json.end_object();
+    json.array("notes", s.notes);
+    if (!s.details_json.empty()) json.key("details").raw(s.details_json);
+    json.end_object();
+  }
+  json.end_array();
+  json.key("holes").begin_array();
+  for (const auto& h : r.holes.holes) write_json(json, h);
+  json.end_array();
+  json.end_object();
+}
+
+}  // namespace Mesh_repair
+}  // namespace CGAL
+
+#endif  // CGAL_MESH_REPAIR_INTERNAL_AUTOMATIC_REPAIR_REPAIR_RESULT_H

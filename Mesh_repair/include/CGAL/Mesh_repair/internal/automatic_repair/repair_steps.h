@@ -1,0 +1,321 @@
+// Copyright (c) 2026 Mesh_repair developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_MESH_REPAIR_INTERNAL_AUTOMATIC_REPAIR_REPAIR_STEPS_H
+#define CGAL_MESH_REPAIR_INTERNAL_AUTOMATIC_REPAIR_REPAIR_STEPS_H
+
+// The steps of automatic_repair, one function each, in the order of thesis Figure 3.2.
+
+#include <CGAL/Mesh_repair/fill_holes.h>
+#include <CGAL/Mesh_repair/internal/hole_filling/border_cycles.h>
+#include <CGAL/Mesh_repair/internal/automatic_repair/repair_result.h>
+#include <CGAL/Mesh_repair/internal/mesh_counts.h>
+#include <CGAL/Mesh_repair/repair_t_junctions.h>
+#include <CGAL/Mesh_repair/stitch_gaps.h>
+#include <CGAL/Mesh_repair/visitor.h>
+
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/manifoldness.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polygon_mesh_processing/repair_degeneracies.h>
+#include <CGAL/Polygon_mesh_processing/repair_self_intersections.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Polygon_mesh_processing/stitch_borders.h>
+#include <CGAL/Polygon_mesh_processing/shape_predicates.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <iterator>
+#include <limits>
+#include <set>
+#include <vector>
+
+namespace CGAL {
+namespace Mesh_repair {
+namespace internal {
+
+/// Hole-filling options of automatic_repair.
+struct Region_fill_options {
+  Fill_method method = Fill_method::automatic;
+  unsigned int continuity = 1;
+  unsigned int seed = 0;
+  double max_hole_size = std::numeric_limits<double>::infinity();  ///< of the bbox diagonal
+  std::size_t max_hole_edges = std::numeric_limits<std::size_t>::max();
+  bool detect_ring_holes = true;
+  int threads = 0;
+};
+
+struct Repair_options {
+  double merge_tolerance = -1;  ///< negative: derived by stitch_gaps
+  bool keep_largest_component = false;
+  bool clean_hole_contours = true;
+  bool detect_self_intersections = true;
+  bool repair_self_intersections = false;
+  Region_fill_options fill;
+};
+
+template <class PolygonMesh>
+std::size_t count_border_halfedges(const PolygonMesh& pm) {
+  std::size_t n = 0;
+  for (auto h : halfedges(pm)) n += is_border(h, pm) ? 1 : 0;
+  return n;
+}
+
+template <class PolygonMesh>
+std::size_t count_self_intersections(const PolygonMesh& pm) {
+  using face_descriptor = typename boost::graph_traits<PolygonMesh>::face_descriptor;
+  std::vector<std::pair<face_descriptor, face_descriptor>> pairs;
+#ifdef CGAL_LINKED_WITH_TBB
+  CGAL::Polygon_mesh_processing::self_intersections<CGAL::Parallel_if_available_tag>(
+      pm, std::back_inserter(pairs));
+#else
+  CGAL::Polygon_mesh_processing::self_intersections(pm, std::back_inserter(pairs));
+#endif
+  return pairs.size();
+}
+
+template <class PolygonMesh>
+void step_exact_stitching(PolygonMesh& pm, Repair_result& result) {
+  Step_timer timer(result, "exact stitching");
+  const std::size_t before = count_border_halfedges(pm);
+  const std::size_t stitched = CGAL::Polygon_mesh_processing::stitch_borders(pm);
+  timer.count("halfedge_pairs_stitched", double(stitched));
+  timer.count("border_edges_before", double(before));
+  timer.count("border_edges_after", double(count_border_halfedges(pm)));
+}
+
+template <class PolygonMesh, class VertexPointMap, class Visitor>
+void step_tolerance_stitching(PolygonMesh& pm, VertexPointMap vpm, const Repair_options& options,
+                              Visitor& visitor, Repair_result& result) {
+  {
+    Step_timer timer(result, "tolerance stitching");
+    const Stitch_result stitched =
+        options.merge_tolerance >= 0
+            ? stitch_gaps(pm, parameters::merge_tolerance(options.merge_tolerance)
+                                  .vertex_point_map(vpm)
+                                  .visitor(std::ref(visitor)))
+            : stitch_gaps(pm, parameters::vertex_point_map(vpm).visitor(std::ref(visitor)));
+    timer.count("node_merges", double(stitched.node_merges));
+    timer.count("t_junctions_split", double(stitched.t_junctions_split));
+    timer.count("edges_stitched", double(stitched.edges_stitched));
+    timer.count("merge_tolerance", stitched.merge_tolerance);
+    timer.count("max_displacement", stitched.max_displacement);
+    timer.details(stitched);
+    if (stitched.cancelled) result.cancelled = true;
+  }
+  if (result.cancelled) return;
+  Step_timer timer(result, "T-junctions");
+  const Stitch_result repaired =
+      options.merge_tolerance >= 0
+          ? repair_t_junctions(pm, parameters::merge_tolerance(options.merge_tolerance)
+                                       .vertex_point_map(vpm)
+                                       .visitor(std::ref(visitor)))
+          : repair_t_junctions(pm, parameters::vertex_point_map(vpm).visitor(std::ref(visitor)));
+  timer.count("t_junctions_split", double(repaired.t_junctions_split));
+  timer.count("edges_stitched", double(repaired.edges_stitched));
+  timer.details(repaired);
+  if (repaired.cancelled) result.cancelled = true;
+}
+
+/// Stitching can leave zero-area slits: border cycles whose vertices are all collinear (exact
+/// predicate), such as a T-junction split next to a corner. No filling method can triangulate
+/// them (every triangle would be flat); they are closed by a fan of flat triangles that the
+/// degenerate-face step then collapses.
+template <class PolygonMesh, class VertexPointMap>
+void step_close_slits(PolygonMesh& pm, VertexPointMap vpm, Repair_result& result) {
+  using halfedge_descriptor = typename boost::graph_traits<PolygonMesh>::halfedge_descriptor;
+  using vertex_descriptor = typename boost::graph_traits<PolygonMesh>::vertex_descriptor;
+  using Point = typename boost::property_traits<VertexPointMap>::value_type;
+  using Kernel = typename CGAL::Kernel_traits<Point>::Kernel;
+  Step_timer timer(result, "zero-area slits");
+  std::size_t slits = 0, faces_added = 0;
+  for (halfedge_descriptor h : border_cycles(pm)) {
+    std::vector<vertex_descriptor> cycle;
+    for (halfedge_descriptor c : halfedges_around_face(h, pm)) cycle.push_back(target(c, pm));
+    bool collinear = cycle.size() >= 3;
+    for (std::size_t i = 2; i < cycle.size() && collinear; ++i)
+      collinear = Kernel().collinear_3_object()(get(vpm, cycle[0]), get(vpm, cycle[1]), get(vpm, cycle[i]));
+    if (!collinear) continue;
+    // A fan from the cycle's first vertex, in the order of the border halfedges: the new faces
+    // take those halfedges over.
+    std::size_t added_here = 0;
+    for (std::size_t i = cycle.size() - 1; i >= 2; --i) {
+      std::array<vertex_descriptor, 3> face{cycle[0], cycle[i - 1], cycle[i]};
+      if (!CGAL::Euler::can_add_face(face, pm)) break;
+      CGAL::Euler::add_face(face, pm);
+      ++added_here;
+    }
+    faces_added += added_here;
+    slits += added_here > 0 ? 1 : 0;
+  }
+  timer.count("slits_closed", double(slits));
+  timer.count("flat_faces_added", double(faces_added));
+}
+
+/// Connected components made only of degenerate faces (a lone flat triangle of a soup, closed by
+/// the slit step into a flat pillow) carry no surface and are left alone by CGAL's
+/// `remove_degenerate_faces`: they are removed here and their faces counted.
+template <class PolygonMesh, class VertexPointMap>
+std::size_t remove_degenerate_components(PolygonMesh& pm, VertexPointMap vpm) {
+  using face_descriptor = typename boost::graph_traits<PolygonMesh>::face_descriptor;
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  std::vector<face_descriptor> seeds;
+  for (face_descriptor f : faces(pm))
+    if (PMP::is_degenerate_triangle_face(f, pm, CGAL::parameters::vertex_point_map(vpm))) seeds.push_back(f);
+  std::set<face_descriptor> doomed;
+  for (face_descriptor seed : seeds) {
+    if (doomed.count(seed)) continue;
+    std::vector<face_descriptor> component;
+    PMP::connected_component(seed, pm, std::back_inserter(component));
+    bool all_degenerate = true;
+    for (face_descriptor f : component)
+      all_degenerate = all_degenerate &&
+                       PMP::is_degenerate_triangle_face(f, pm, CGAL::parameters::vertex_point_map(vpm));
+    if (all_degenerate) doomed.insert(component.begin(), component.end());
+  }
+  for (face_descriptor f : doomed) CGAL::Euler::remove_face(halfedge(f, pm), pm);
+  return doomed.size();
+}
+
+template <class PolygonMesh>
+void step_non_manifold_vertices(PolygonMesh& pm, Repair_result& result) {
+  Step_timer timer(result, "non-manifold vertices");
+  const std::size_t duplicated = CGAL::Polygon_mesh_processing::duplicate_non_manifold_vertices(pm);
+  timer.count("vertices_duplicated", double(duplicated));
+}
+
+template <class PolygonMesh, class VertexPointMap>
+void step_degenerate_faces(PolygonMesh& pm, VertexPointMap vpm, Repair_result& result) {
+  Step_timer timer(result, "degenerate faces");
+  const std::size_t faces_before = count_faces(pm), vertices_before = count_vertices(pm);
+  const bool all_removed = CGAL::Polygon_mesh_processing::remove_degenerate_faces(
+      pm, CGAL::parameters::vertex_point_map(vpm));
+  timer.count("flat_component_faces_removed", double(remove_degenerate_components(pm, vpm)));
+  timer.count("faces_removed", double(faces_before) - double(count_faces(pm)));
+  timer.count("vertices_removed", double(vertices_before) - double(count_vertices(pm)));
+  if (!all_removed) timer.step().notes.push_back("some degenerate faces could not be removed");
+}
+
+template <class PolygonMesh>
+void step_largest_component(PolygonMesh& pm, Repair_result& result) {
+  Step_timer timer(result, "largest component");
+  const std::size_t faces_before = count_faces(pm);
+  const std::size_t removed = CGAL::Polygon_mesh_processing::keep_largest_connected_components(pm, 1);
+  result.components_removed = removed;
+  result.faces_removed_with_components = faces_before - count_faces(pm);
+  timer.count("components_removed", double(removed));
+  timer.count("faces_removed", double(result.faces_removed_with_components));
+}
+
+template <class PolygonMesh, class VertexPointMap, class Visitor>
+void step_fill_holes(PolygonMesh& pm, VertexPointMap vpm, const Repair_options& options,
+                     Visitor& visitor, Repair_result& result) {
+  Step_timer timer(result, "hole filling");
+  const std::size_t faces_before = count_faces(pm), vertices_before = count_vertices(pm);
+  const Region_fill_options& fill = options.fill;
+  result.holes = fill_holes(pm, parameters::vertex_point_map(vpm)
+                                    .fill_method(fill.method)
+                                    .fairing_continuity(fill.continuity)
+                                    .random_seed(fill.seed)
+                                    .max_hole_size(fill.max_hole_size)
+                                    .max_hole_edges(fill.max_hole_edges)
+                                    .detect_ring_holes(fill.detect_ring_holes)
+                                    .visitor(std::ref(visitor)));
+  result.holes_too_large = result.holes.skipped;
+  if (result.holes.cancelled) result.cancelled = true;
+  timer.count("holes", double(result.holes.holes.size()));
+  timer.count("filled", double(result.holes.filled));
+  timer.count("failed", double(result.holes.failed));
+  timer.count("left_open_too_large", double(result.holes_too_large));
+  timer.count("faces_added", double(count_faces(pm)) - double(faces_before));
+  timer.count("vertices_added", double(count_vertices(pm)) - double(vertices_before));
+}
+
+template <class PolygonMesh, class VertexPointMap>
+void step_remove_self_intersections(PolygonMesh& pm, VertexPointMap vpm, Repair_result& result) {
+  Step_timer timer(result, "self-intersection removal");
+  const std::size_t faces_before = count_faces(pm);
+  const bool solved = CGAL::Polygon_mesh_processing::experimental::remove_self_intersections(
+      pm, CGAL::parameters::vertex_point_map(vpm).preserve_genus(true));
+  timer.count("faces_before", double(faces_before));
+  timer.count("faces_after", double(count_faces(pm)));
+  if (!solved) timer.step().notes.push_back("CGAL could not remove every self-intersection");
+}
+
+/// Faces of all filled patches and their one-ring are not known here (regions were copied
+/// back), so the verification counts self-intersections of the whole output and compares with
+/// the input count: new pairs can only come from the repair.
+template <class PolygonMesh>
+void step_verify(const PolygonMesh& pm, const Repair_options& options, Repair_result& result) {
+  Step_timer timer(result, "verification");
+  result.valid = CGAL::is_valid_polygon_mesh(pm);
+  std::vector<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor> non_manifold;
+  CGAL::Polygon_mesh_processing::non_manifold_vertices(pm, std::back_inserter(non_manifold));
+  result.manifold = non_manifold.empty();
+  result.border_cycles_left = border_cycles(pm).size();
+  result.closed = result.border_cycles_left == 0;
+  if (options.detect_self_intersections) {
+    result.self_intersections_output = count_self_intersections(pm);
+    result.self_intersections_checked = true;
+    if (result.self_intersections_output > result.self_intersections_input)
+      result.self_intersections_in_patches =
+          result.self_intersections_output - result.self_intersections_input;
+  }
+  result.output_vertices = count_vertices(pm);
+  result.output_faces = count_faces(pm);
+  timer.count("valid", result.valid);
+  timer.count("manifold", result.manifold);
+  timer.count("border_cycles_left", double(result.border_cycles_left));
+  timer.count("self_intersections", double(result.self_intersections_output));
+}
+
+/// One line per thing left undone, for `Repair_result::remaining`.
+inline void list_remaining(Repair_result& result) {
+  auto add = [&](bool condition, const std::string& line) {
+    if (condition) result.remaining.push_back(line);
+  };
+  add(!result.valid, "the output is not a valid polygon mesh");
+  add(!result.manifold, "non-manifold vertices remain");
+  add(result.holes.failed > 0, std::to_string(result.holes.failed) + " hole(s) could not be filled");
+  add(result.holes_too_large > 0,
+      std::to_string(result.holes_too_large) + " hole(s) larger than the size limit left open");
+  add(!result.closed && result.holes.failed == 0 && result.holes_too_large == 0,
+      std::to_string(result.border_cycles_left) + " border cycle(s) remain");
+  add(result.self_intersections_in_patches > 0,
+      std::to_string(result.self_intersections_in_patches) +
+          " self-intersecting face pair(s) more than in the input");
+  add(result.self_intersections_checked && result.self_intersections_output > 0 &&
+          result.self_intersections_in_patches == 0,
+      std::to_string(result.self_intersections_output) +
+          " self-intersecting face pair(s) (already in the input)");
+  add(result.cancelled, "cancelled before the end");
+}
+
+template <class PolygonMesh, class VertexPointMap, class Visitor>
+Repair_result run_repair_pipeline(PolygonMesh& pm, VertexPointMap vpm, const Repair_options& options,
+                                  Visitor& visitor) {
+  Repair_result result;
+  result.input_vertices = count_vertices(pm);
+  result.input_faces = count_faces(pm);
+  if (options.detect_self_intersections) {
+    Step_timer timer(result, "input self-intersections");
+    result.self_intersections_input = count_self_intersections(pm);
+    timer.count("pairs", double(result.self_intersections_input));
+  }
+  step_exact_stitching(pm, result);
+  step_tolerance_stitching(pm, vpm, options, visitor, result);
+  if (!result.cancelled) step_non_manifold_vertices(pm, result);
+  if (!result.cancelled) step_close_slits(pm, vpm, result);
+  if (!result.cancelled) step_degenerate_faces(pm, vpm, result);
+  if (!result.cancelled && options.keep_largest_component) step_largest_component(pm, result);
+  if (!result.cancelled) step_fill_holes(pm, vpm, options, visitor, result);
+  if (!result.cancelled && options.repair_self_intersections)
+    step_remove_self_intersections(pm, vpm, result);
+  step_verify(pm, options, result);
+  list_remaining(result);
+  return result;
+}
+
+}  // namespace internal
+}  // namespace Mesh_repair
+}  // namespace CGAL
+
+#endif  // CGAL_MESH_REPAIR_INTERNAL_AUTOMATIC_REPAIR_REPAIR_STEPS_H

@@ -1,0 +1,617 @@
+// Copyright (c) 2026 Mesh_repair developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_MESH_REPAIR_INTERNAL_HOLE_FILLING_ADVANCING_FRONT_CORE_H
+#define CGAL_MESH_REPAIR_INTERNAL_HOLE_FILLING_ADVANCING_FRONT_CORE_H
+
+// The advancing front of thesis section 4.4 (and its customised form of section 5.9), on plain
+// arrays so that every method can reuse it: `advance_front` triangulates the region bounded by a
+// border cycle, placing new nodes from averaged neighbour normals (eq. 4.8-4.12) at a target
+// edge length, merging nodes closer than half an edge length, and checking every new triangle
+// against the front with exact 2D orientation tests in the node's tangent plane. Where a new
+// node goes is finished by a caller-supplied projection (identity, a fitted quadric, the Bezier
+// patches of shape prediction) and the edge length comes from a caller-supplied size function.
+// See doc/advancing_front.md.
+
+#include <CGAL/Mesh_repair/internal/hole_filling/border_cycles.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <initializer_list>
+#include <queue>
+#include <string>
+#include <unordered_map>
+#include <unordered_set>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Mesh_repair {
+namespace internal {
+
+/// The region to triangulate: a border cycle of distinct points (a point may occur twice in the
+/// cycle at a pinched border). The cycle runs counterclockwise around the region seen from the
+/// side its normals point to (a mesh's border halfedges do).
+struct Front_input {
+  std::vector<Vec3> points;        ///< border points; new nodes are appended after them
+  std::vector<Vec3> normals;       ///< per point: the sum of its faces' unit normals (eq. 4.8)
+  std::vector<std::size_t> cycle;  ///< indices into `points`, in border order
+  /// Edges that already exist between two border points (mesh edges, border edges included):
+  /// the front must not create them again.
+  std::vector<std::pair<std::size_t, std::size_t>> existing_edges;
+};
+
+struct Front_options {
+  double small_angle_deg = 75;      ///< below: one triangle closes the corner (thesis 4.4 rule a)
+  double large_angle_deg = 135;     ///< above: three triangles, two new nodes (rule c)
+  double merge_factor = 0.5;        ///< a new node within this times the edge length is merged
+  double max_triangles_factor = 4;  ///< give up beyond this times the expected triangle count
+  int smoothing_iterations = 3;     ///< tangential relaxation of the new nodes after closing
+};
+
+/// `points` starts with the input's border points; `triangles` index into it, in creation order
+/// (each triangle touches the front of its time, so adding them to a mesh in this order keeps
+/// every intermediate border a set of cycles).
+struct Front_triangulation {
+  std::vector<Vec3> points;
+  std::vector<std::array<std::size_t, 3>> triangles;
+  std::size_t border_points = 0;
+  bool closed = false;
+  std::string failure;
+};
+
+/// Finishes the position of a new node (candidate, normal of the node it grows from).
+using Front_projection = std::function<Vec3(const Vec3&, const Vec3&)>;
+/// The edge length wanted at a point, given the mean length of the two front edges there.
+using Front_size = std::function<double(const Vec3&, double)>;
+
+class Advancing_front {
+  using Point_2 = Epick::Point_2;
+  static constexpr int none = -1;
+
+  struct Front_edge {
+    std::size_t from, to;
+    int prev, next;
+    bool alive;
+  };
+  struct Corner {  // the corner at the target of edge `in`, between `in` and its next
+    double angle;
+    int in;
+    std::uint32_t stamp;
+    bool operator>(const Corner& other) const { return angle > other.angle; }
+  };
+
+ public:
+  Advancing_front(const Front_input& input, Front_projection project, Front_size size,
+                  const Front_options& options)
+      : project_(std::move(project)), size_(std::move(size)), options_(options) {
+    points_ = input.points;
+    normal_sums_ = input.normals;
+    out_edges_.resize(points_.size());
+    double perimeter = 0;
+    Vec3 vector_area{0, 0, 0};
+    const std::size_t n = input.cycle.size();
+    for (std::size_t k = 0; k < n; ++k) {
+      const Vec3& p = points_[input.cycle[k]];
+      const Vec3& q = points_[input.cycle[(k + 1) % n]];
+      perimeter += norm(sub(q, p));
+      vector_area = add(vector_area, scale(cross(p, q), 0.5));
+    }
+    hole_normal_ = normalized(vector_area);
+    mean_length_ = n > 0 ? perimeter / double(n) : 1.0;
+    if (!(mean_length_ > 0)) mean_length_ = 1.0;
+    cell_ = 2.0 * mean_length_;
+    const double expected = std::max(norm(vector_area), perimeter * mean_length_) /
+                            (0.433 * mean_length_ * mean_length_);
+    max_triangles_ = std::size_t(options_.max_triangles_factor * expected) + 4 * n + 16;
+    for (const auto& e : input.existing_edges) edges_.insert(key(e.first, e.second));
+    for (std::size_t p = 0; p < points_.size(); ++p) insert_in_grid(p);
+    for (std::size_t k = 0; k < n; ++k) add_front_edge(input.cycle[k], input.cycle[(k + 1) % n]);
+    for (std::size_t k = 0; k < n; ++k) {
+      front_[k].next = int((k + 1) % n);
+      front_[k].prev = int((k + n - 1) % n);
+    }
+    for (std::size_t k = 0; k < n; ++k) push_corner(int(k));
+  }
+
+  Front_triangulation run() {
+    Front_triangulation result;
+    result.border_points = border_count_ = points_.size();
+    std::size_t failures = 0;
+    while (alive_ > 0) {
+      if (triangles_.size() > max_triangles_) {
+        result.failure = "the front does not close (too many triangles)";
+        break;
+      }
+      if (queue_.empty()) {
+        if (blocked_.empty() || failures > 2 * alive_ + 8) {
+          result.failure = "the front is stuck: no valid triangle at any node";
+          break;
+        }
+        for (int e : blocked_) push_corner(e);
+        blocked_.clear();
+        continue;
+      }
+      const Corner corner = queue_.top();
+      queue_.pop();
+      if (!front_[corner.in].alive || stamps_[corner.in] != corner.stamp) continue;
+      if (advance(corner.in, corner.angle)) {
+        failures = 0;
+        for (int e : blocked_) push_corner(e);
+        blocked_.clear();
+      } else {
+        ++failures;
+        blocked_.push_back(corner.in);
+      }
+    }
+    result.closed = alive_ == 0;
+    if (result.closed) smooth();
+    result.points = std::move(points_);
+    result.triangles = std::move(triangles_);
+    result.border_points = border_count_;
+    return result;
+  }
+
+ private:
+  // ---- bookkeeping --------------------------------------------------------------------------
+  static std::uint64_t key(std::size_t a, std::size_t b) {
+    if (a > b) std::swap(a, b);
+    return (std::uint64_t(a) << 32) | std::uint64_t(b);
+  }
+  static std::uint64_t directed_key(std::size_t a, std::size_t b) {
+    return (std::uint64_t(a) << 32) | std::uint64_t(b);
+  }
+  std::uint64_t cell_key(const Vec3& p) const {
+    auto c = [&](double x) {
+      return std::uint64_t(std::int64_t(std::floor(x / cell_)) & 0x1fffff);
+    };
+    return (c(p[0]) << 42) | (c(p[1]) << 21) | c(p[2]);
+  }
+  void insert_in_grid(std::size_t p) { grid_[cell_key(points_[p])].push_back(p); }
+
+  int add_front_edge(std::size_t from, std::size_t to) {
+    front_.push_back({from, to, none, none, true});
+    stamps_.push_back(0);
+    const int e = int(front_.size() - 1);
+    directed_.emplace(directed_key(from, to), e);
+    edges_.insert(key(from, to));
+    out_edges_[from].push_back(e);
+    ++alive_;
+    return e;
+  }
+  void kill(int e) {
+    Front_edge& edge = front_[e];
+    edge.alive = false;
+    directed_.erase(directed_key(edge.from, edge.to));
+    auto& out = out_edges_[edge.from];
+    out.erase(std::find(out.begin(), out.end(), e));
+    --alive_;
+  }
+  void link(int a, int b) {
+    front_[a].next = b;
+    front_[b].prev = a;
+  }
+
+  Vec3 normal(std::size_t p) const {
+    const Vec3 n = normalized(normal_sums_[p]);
+    return norm(n) > 0 ? n : hole_normal_;
+  }
+  std::size_t new_point(const Vec3& p) {
+    points_.push_back(p);
+    normal_sums_.push_back({0, 0, 0});
+    out_edges_.emplace_back();
+    insert_in_grid(points_.size() - 1);
+    return points_.size() - 1;
+  }
+  void add_triangle(std::size_t a, std::size_t b, std::size_t c) {
+    triangles_.push_back({a, b, c});
+    edges_.insert(key(a, b));
+    edges_.insert(key(b, c));
+    edges_.insert(key(c, a));
+    // Eq. 4.8: a node's normal is the mean of its elements' unit normals.
+    const Vec3 n = normalized(cross(sub(points_[b], points_[a]), sub(points_[c], points_[a])));
+    for (std::size_t p : {a, b, c}) normal_sums_[p] = add(normal_sums_[p], n);
+  }
+
+  /// Interior angle (radians, in [0, 2pi)) at the target of `in`, in the node's tangent plane.
+  double angle_at(int in) const {
+    const Front_edge& e = front_[in];
+    const std::size_t a = e.from, v = e.to, b = front_[e.next].to;
+    const Vec3 n = normal(v);
+    Vec3 u = sub(points_[a], points_[v]), w = sub(points_[b], points_[v]);
+    u = sub(u, scale(n, dot(u, n)));
+    w = sub(w, scale(n, dot(w, n)));
+    double theta = std::atan2(dot(n, cross(w, u)), dot(w, u));
+    if (theta < 0) theta += 2 * CGAL_PI;
+    return theta;
+  }
+  void push_corner(int in) {
+    if (!front_[in].alive) return;
+    ++stamps_[in];
+    queue_.push({angle_at(in), in, stamps_[in]});
+  }
+
+  // ---- geometry checks ----------------------------------------------------------------------
+  /// The tangent frame at a node: exact 2D tests run on points projected onto it.
+  struct Tangent_frame {
+    Vec3 origin, u, v, n;
+    Point_2 operator()(const Vec3& p) const {
+      const Vec3 d = sub(p, origin);
+      return Point_2(dot(d, u), dot(d, v));
+    }
+    double height(const Vec3& p) const { return dot(sub(p, origin), n); }
+  };
+  Tangent_frame frame_at(std::size_t v) const {
+    Tangent_frame f;
+    f.origin = points_[v];
+    f.n = normal(v);
+    const Vec3 helper = std::abs(f.n[0]) < 0.6 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
+    f.u = normalized(cross(f.n, helper));
+    f.v = cross(f.n, f.u);
+    return f;
+  }
+
+  /// Front points within `radius` of `center` and not far off the tangent plane.
+  std::vector<std::size_t> nearby_front_points(const Tangent_frame& frame, double radius) const {
+    std::vector<std::size_t> found;
+    const Vec3& c = frame.origin;
+    const int reach = int(std::ceil(radius / cell_));
+    const auto base = [&](double x) { return std::int64_t(std::floor(x / cell_)); };
+    const std::int64_t cx = base(c[0]), cy = base(c[1]), cz = base(c[2]);
+    for (std::int64_t i = cx - reach; i <= cx + reach; ++i) {
+      for (std::int64_t j = cy - reach; j <= cy + reach; ++j) {
+        for (std::int64_t k = cz - reach; k <= cz + reach; ++k) {
+          const std::uint64_t key = (std::uint64_t(i & 0x1fffff) << 42) |
+                                    (std::uint64_t(j & 0x1fffff) << 21) |
+                                    std::uint64_t(k & 0x1fffff);
+          const auto it = grid_.find(key);
+          if (it == grid_.end()) continue;
+          for (std::size_t p : it->second) {
+            if (out_edges_[p].empty()) continue;
+            const Vec3 d = sub(points_[p], c);
+            if (dot(d, d) <= radius * radius && std::abs(frame.height(points_[p])) <= 0.5 * radius)
+              found.push_back(p);
+          }
+        }
+      }
+    }
+    return found;
+  }
+
+  /// A candidate fan: triangles to add, each listed (a, b, c) counterclockwise.
+  struct Fan {
+    std::vector<std::array<std::size_t, 3>> triangles;
+    std::vector<Vec3> new_points;  // positions of the placeholder indices >= points_.size()
+  };
+  const Vec3& position(const Fan& fan, std::size_t p) const {
+    return p < points_.size() ? points_[p] : fan.new_points[p - points_.size()];
+  }
+
+  /// Exact checks of a fan at node v in its tangent plane: every triangle counterclockwise, no
+  /// front point inside or on a triangle, no new edge meeting a front edge away from its ends;
+  /// and no new edge that already exists in the mesh or the patch.
+  bool fan_is_valid(std::size_t v, const Fan& fan, std::initializer_list<int> consumed) const {
+    const Tangent_frame frame = frame_at(v);
+    double radius = 0;
+    std::vector<std::pair<std::size_t, std::size_t>> new_edges;
+    for (const auto& t : fan.triangles) {
+      for (int k = 0; k < 3; ++k) {
+        radius = std::max(radius, norm(sub(position(fan, t[k]), points_[v])));
+        const std::size_t s = t[k], e = t[(k + 1) % 3];
+        const auto front_edge = directed_.find(directed_key(s, e));
+        if (front_edge != directed_.end()) {  // the fan may only consume the edges it replaces
+          if (std::find(consumed.begin(), consumed.end(), front_edge->second) == consumed.end())
+            return false;
+          continue;
+        }
+        if (s < points_.size() && e < points_.size() && edges_.count(key(s, e))) return false;
+        new_edges.emplace_back(s, e);
+      }
+      const Point_2 p0 = frame(position(fan, t[0])), p1 = frame(position(fan, t[1])),
+                    p2 = frame(position(fan, t[2]));
+      if (CGAL::orientation(p0, p1, p2) != CGAL::LEFT_TURN) return false;
+    }
+    const std::vector<std::size_t> near = nearby_front_points(frame, 1.5 * radius + 1e-300);
+    for (std::size_t x : near) {
+      const Point_2 px = frame(points_[x]);
+      for (const auto& t : fan.triangles) {
+        if (x == t[0] || x == t[1] || x == t[2]) continue;
+        const Point_2 p0 = frame(position(fan, t[0])), p1 = frame(position(fan, t[1])),
+                      p2 = frame(position(fan, t[2]));
+        if (CGAL::orientation(p0, p1, px) != CGAL::RIGHT_TURN &&
+            CGAL::orientation(p1, p2, px) != CGAL::RIGHT_TURN &&
+            CGAL::orientation(p2, p0, px) != CGAL::RIGHT_TURN)
+          return false;
+      }
+      for (int e : out_edges_[x]) {
+        const std::size_t y = front_[e].to;
+        const Point_2 py = frame(points_[y]);
+        for (const auto& edge : new_edges) {
+          if (edge.first == x || edge.first == y || edge.second == x || edge.second == y) continue;
+          if (CGAL::do_intersect(Epick::Segment_2(frame(position(fan, edge.first)),
+                                                  frame(position(fan, edge.second))),
+                                 Epick::Segment_2(px, py)))
+            return false;
+        }
+      }
+    }
+    return true;
+  }
+
+  // ---- the rules ----------------------------------------------------------------------------
+  /// Direction at v rotated by phi from the tangent direction of `toward` about `n`
+  /// (counterclockwise for positive phi).
+  Vec3 rotated(std::size_t v, std::size_t toward, const Vec3& n, double phi) const {
+    Vec3 w = sub(points_[toward], points_[v]);
+    w = normalized(sub(w, scale(n, dot(w, n))));
+    const Vec3 left = cross(n, w);
+    return add(scale(w, std::cos(phi)), scale(left, std::sin(phi)));
+  }
+
+  bool advance(int in, double theta) {
+    const Front_edge& e_in = front_[in];
+    const int out = e_in.next;
+    const std::size_t a = e_in.from, v = e_in.to, b = front_[out].to;
+    if (front_[out].next == in) {  // two edges a->v->a: a zero-width channel, glue it
+      kill(in);
+      kill(out);
+      return true;
+    }
+    if (front_[front_[out].next].next == in) return close_triangle(in);
+    const double deg = theta * 180.0 / CGAL_PI;
+    if (deg < options_.small_angle_deg) return ear(in);
+    const double length = size_(
+        points_[v], 0.5 * (norm(sub(points_[a], points_[v])) + norm(sub(points_[b], points_[v]))));
+    // Eq. 4.9-4.12: the new elements' normals average the node's with its neighbours'.
+    const Vec3 n = normal(v);
+    const Vec3 n1 = normalized(add(n, normal(a))), n2 = normalized(add(n, normal(b)));
+    if (deg <= options_.large_angle_deg) {
+      return bisect(in, theta, length, n, n1, n2) || ear(in);
+    }
+    return trisect(in, theta, length, n, n1, n2) || bisect(in, theta, length, n, n1, n2) ||
+           (deg < 180 && ear(in));
+  }
+
+  bool close_triangle(int in) {
+    const int out = front_[in].next, last = front_[out].next;
+    const std::size_t a = front_[in].from, v = front_[in].to, b = front_[out].to;
+    Fan fan{{{a, v, b}}, {}};
+    if (!fan_is_valid(v, fan, {in, out, last})) return false;
+    kill(in);
+    kill(out);
+    kill(last);
+    add_triangle(a, v, b);
+    return true;
+  }
+
+  /// Rule a: the triangle (a, v, b); the front edge a->b replaces a->v->b.
+  bool ear(int in) {
+    const int out = front_[in].next;
+    const std::size_t a = front_[in].from, v = front_[in].to, b = front_[out].to;
+    if (a == b) return false;
+    Fan fan{{{a, v, b}}, {}};
+    if (!fan_is_valid(v, fan, {in, out})) return false;
+    const int before = front_[in].prev, after = front_[out].next;
+    kill(in);
+    kill(out);
+    add_triangle(a, v, b);
+    const int e = add_front_edge(a, b);
+    link(before, e);
+    link(e, after);
+    push_corner(before);
+    push_corner(e);
+    return true;
+  }
+
+  /// Nearest front point within `radius` of p, other than v; or `none`.
+  long nearest_front_point(const Vec3& p, std::size_t v, double radius) const {
+    Tangent_frame frame;
+    frame.origin = p;
+    frame.n = normal(v);
+    long best = none;
+    double best_distance = radius;
+    for (std::size_t x : nearby_front_points(frame, radius)) {
+      const double d = norm(sub(points_[x], p));
+      if (x != v && d <= best_distance) {
+        best = long(x);
+        best_distance = d;
+      }
+    }
+    return best;
+  }
+
+  /// Rule b: one new node from the two equilateral apexes on edges A and B in the planes of
+  /// normals n1 and n2 (thesis Figure 4.11), averaged; merged with a front node closer than half
+  /// an edge length.
+  bool bisect(int in, double theta, double length, const Vec3& n, const Vec3& n1, const Vec3& n2) {
+    const int out = front_[in].next;
+    const std::size_t a = front_[in].from, v = front_[in].to, b = front_[out].to;
+    const double sixty = CGAL_PI / 3;
+    const Vec3 apex_b = add(points_[v], scale(rotated(v, b, n2, sixty), length));
+    const Vec3 apex_a = add(points_[v], scale(rotated(v, a, n1, -sixty), length));
+    Vec3 p = scale(add(apex_a, apex_b), 0.5);
+    if (norm(sub(p, points_[v])) < 0.5 * length)
+      p = add(points_[v], scale(rotated(v, b, n, 0.5 * theta), length));
+    p = project_(p, n);
+    const long q = nearest_front_point(p, v, options_.merge_factor * length);
+    if (q != none && (std::size_t(q) == a || std::size_t(q) == b)) return false;  // ear instead
+    if (q != none && merge_fan(in, std::size_t(q))) return true;
+    return fresh_fan(in, {p});
+  }
+
+  /// Rule c: two new nodes at a third and two thirds of the angle (thesis eq. 5.33), tilted by
+  /// n2 and n1; not merged (a close front node sends the corner to rule b).
+  bool trisect(int in, double theta, double length, const Vec3& n, const Vec3& n1, const Vec3& n2) {
+    (void)n;
+    const int out = front_[in].next;
+    const std::size_t a = front_[in].from, v = front_[in].to, b = front_[out].to;
+    Vec3 pb = add(points_[v], scale(rotated(v, b, n2, theta / 3), length));
+    Vec3 pa = add(points_[v], scale(rotated(v, a, n1, -theta / 3), length));
+    pb = project_(pb, n2);
+    pa = project_(pa, n1);
+    const double merge = options_.merge_factor * length;
+    if (nearest_front_point(pa, v, merge) != none || nearest_front_point(pb, v, merge) != none)
+      return false;
+    return fresh_fan(in, {pa, pb});
+  }
+
+  /// Fan a, p_1, ..., p_k, b around v with new nodes.
+  bool fresh_fan(int in, const std::vector<Vec3>& nodes) {
+    const int out = front_[in].next;
+    const std::size_t a = front_[in].from, v = front_[in].to, b = front_[out].to;
+    Fan fan;
+    fan.new_points = nodes;
+    std::vector<std::size_t> chain{a};
+    for (std::size_t k = 0; k < nodes.size(); ++k) chain.push_back(points_.size() + k);
+    chain.push_back(b);
+    for (std::size_t k = 0; k + 1 < chain.size(); ++k)
+      fan.triangles.push_back({chain[k], v, chain[k + 1]});
+    if (!fan_is_valid(v, fan, {in, out})) return false;
+    const int before = front_[in].prev, after = front_[out].next;
+    for (const Vec3& p : nodes) new_point(p);
+    kill(in);
+    kill(out);
+    for (const auto& t : fan.triangles) add_triangle(t[0], t[1], t[2]);
+    int previous = before;
+    std::vector<int> created;
+    for (std::size_t k = 0; k + 1 < chain.size(); ++k) {
+      const int e = add_front_edge(chain[k], chain[k + 1]);
+      link(previous, e);
+      created.push_back(e);
+      previous = e;
+    }
+    link(previous, after);
+    push_corner(before);
+    for (int e : created) push_corner(e);
+    return true;
+  }
+
+  /// True when walking the front from edge `from` reaches edge `target` (same loop).
+  bool same_loop(int from, int target) const {
+    int e = from;
+    for (std::size_t steps = 0; steps <= alive_; ++steps) {
+      if (e == target) return true;
+      e = front_[e].next;
+      if (e == from) return false;
+    }
+    return false;
+  }
+
+  /// Rule b with the new node merged into the front node q: triangles (a, v, q), (q, v, b),
+  /// which split the front loop in two (or consume q's edges when q neighbours a or b).
+  bool merge_fan(int in, std::size_t q) {
+    if (out_edges_[q].size() != 1) return false;
+    const int out = front_[in].next;
+    const std::size_t a = front_[in].from, v = front_[in].to, b = front_[out].to;
+    const int q_out = out_edges_[q].front(), q_in = front_[q_out].prev;
+    if (!same_loop(out, q_out)) return false;
+    Fan fan{{{a, v, q}, {q, v, b}}, {}};
+    if (edges_.count(key(v, q))) return false;
+    const bool consumes_a = q_out == front_[in].prev;  // front edge q->a
+    const bool consumes_b = q_in == front_[out].next;  // front edge b->q
+    if (!fan_is_valid(v, fan, {in, out, consumes_a ? q_out : in, consumes_b ? q_in : in}))
+      return false;
+    const int before = front_[in].prev, after = front_[out].next;
+    kill(in);
+    kill(out);
+    add_triangle(a, v, q);
+    add_triangle(q, v, b);
+    if (consumes_a && consumes_b) {
+      kill(q_out);
+      kill(q_in);
+      return true;
+    }
+    if (consumes_a) {
+      kill(q_out);
+      const int e = add_front_edge(q, b);
+      link(q_in, e);
+      link(e, after);
+      push_corner(q_in);
+      push_corner(e);
+      return true;
+    }
+    if (consumes_b) {
+      kill(q_in);
+      const int e = add_front_edge(a, q);
+      link(before, e);
+      link(e, q_out);
+      push_corner(before);
+      push_corner(e);
+      return true;
+    }
+    const int to_q = add_front_edge(a, q), from_q = add_front_edge(q, b);
+    link(before, to_q);
+    link(to_q, q_out);
+    link(q_in, from_q);
+    link(from_q, after);
+    for (int e : {before, to_q, q_in, from_q}) push_corner(e);
+    return true;
+  }
+
+  // ---- after closing --------------------------------------------------------------------------
+  /// Tangential relaxation of the new nodes towards their neighbours' centroid, each move
+  /// finished by the projection: evens out the triangles without shrinking the patch.
+  void smooth() {
+    const std::size_t count = points_.size();
+    if (options_.smoothing_iterations <= 0 || count == border_count_) return;
+    std::vector<std::vector<std::size_t>> neighbours(count - border_count_);
+    for (const auto& t : triangles_) {
+      for (int k = 0; k < 3; ++k) {
+        const std::size_t p = t[k];
+        if (p < border_count_) continue;
+        auto& list = neighbours[p - border_count_];
+        for (int j = 1; j < 3; ++j) {
+          const std::size_t q = t[(k + j) % 3];
+          if (std::find(list.begin(), list.end(), q) == list.end()) list.push_back(q);
+        }
+      }
+    }
+    for (int iteration = 0; iteration < options_.smoothing_iterations; ++iteration) {
+      for (std::size_t p = border_count_; p < count; ++p) {
+        const auto& list = neighbours[p - border_count_];
+        if (list.empty()) continue;
+        Vec3 centroid{0, 0, 0};
+        for (std::size_t q : list) centroid = add(centroid, points_[q]);
+        centroid = scale(centroid, 1.0 / double(list.size()));
+        const Vec3 n = normal(p);
+        Vec3 move = sub(centroid, points_[p]);
+        move = sub(move, scale(n, dot(move, n)));
+        points_[p] = project_(add(points_[p], move), n);
+      }
+    }
+  }
+
+  Front_projection project_;
+  Front_size size_;
+  Front_options options_;
+  std::vector<Vec3> points_, normal_sums_;
+  std::vector<std::vector<int>> out_edges_;
+  std::vector<Front_edge> front_;
+  std::vector<std::uint32_t> stamps_;
+  std::unordered_map<std::uint64_t, int> directed_;
+  std::unordered_set<std::uint64_t> edges_;
+  std::unordered_map<std::uint64_t, std::vector<std::size_t>> grid_;
+  std::priority_queue<Corner, std::vector<Corner>, std::greater<Corner>> queue_;
+  std::vector<int> blocked_;
+  std::vector<std::array<std::size_t, 3>> triangles_;
+  std::size_t alive_ = 0, border_count_ = 0, max_triangles_ = 0;
+  double mean_length_ = 1, cell_ = 1;
+  Vec3 hole_normal_{0, 0, 1};
+};
+
+/// Triangulates the region bounded by `input.cycle` with the advancing front.
+inline Front_triangulation advance_front(const Front_input& input, Front_projection project,
+                                         Front_size size, const Front_options& options = {}) {
+  Advancing_front front(input, std::move(project), std::move(size), options);
+  return front.run();
+}
+
+}  // namespace internal
+}  // namespace Mesh_repair
+}  // namespace CGAL
+
+#endif  // CGAL_MESH_REPAIR_INTERNAL_HOLE_FILLING_ADVANCING_FRONT_CORE_H

@@ -1,0 +1,286 @@
+// Copyright (c) 2026 Mesh_repair developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_MESH_REPAIR_INTERNAL_MGA_NODE_SMOOTHING_H
+#define CGAL_MESH_REPAIR_INTERNAL_MGA_NODE_SMOOTHING_H
+
+// The sweeps of Chen et al. 3.1 (steps 2-9): every free node in turn searches each adjacent
+// element with the micro-GA (or, as the paper's baseline, a conjugate-gradient search in its
+// tangent plane), maps the trial positions onto the cubic surface and moves to the best one when
+// it raises the fitness by at least `min_gain` and folds no element (exact orientation test).
+// Sweeps repeat until no node moves.
+//
+// Nodes that share no element are independent, so the nodes are greedily coloured and each
+// colour class is processed in parallel (TBB). Each node draws from its own generator, seeded
+// from (seed, node index, sweep): the result is the same for any number of threads.
+
+#include <CGAL/Mesh_repair/internal/c1_surface/cubic_surface.h>
+#include <CGAL/Mesh_repair/internal/mga/micro_ga.h>
+#include <CGAL/Mesh_repair/internal/mga/node_star.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+#endif
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <vector>
+
+namespace CGAL {
+namespace Mesh_repair {
+namespace internal {
+
+enum class Node_optimizer { micro_ga, conjugate_gradient };
+
+struct Node_smoothing_settings {
+  Node_optimizer optimizer = Node_optimizer::micro_ga;
+  Micro_ga_settings ga;
+  int max_sweeps = 10;
+  double min_gain = 1e-3;  // a move must raise the node's fitness (sum of alpha/beta) this much
+  std::uint64_t seed = 0;
+  int threads = 1;
+};
+
+struct Node_smoothing_statistics {
+  int sweeps = 0;
+  std::size_t moves = 0;
+  std::size_t rejected_folds = 0;
+  bool converged = false;
+  bool cancelled = false;
+};
+
+/// Greedy colouring of the free nodes: two nodes of one element never get the same colour.
+inline std::vector<std::vector<int>> independent_sets(const Polygon_arrays& mesh,
+                                                      const std::vector<bool>& fixed) {
+  std::vector<int> colour(mesh.points.size(), -1);
+  std::vector<std::vector<int>> classes;
+  std::vector<int> used_by;  // colour -> last node that saw it among its neighbours
+  for (int v = 0; v < int(mesh.points.size()); ++v) {
+    if (fixed[v]) continue;
+    for (int k = mesh.incidence_start[v]; k < mesh.incidence_start[v + 1]; ++k) {
+      const auto& face = mesh.faces[mesh.incidence[k]];
+      for (int i = 0; i < mesh.degree(mesh.incidence[k]); ++i)
+        if (colour[face[i]] >= 0) used_by[colour[face[i]]] = v;
+    }
+    int c = 0;
+    while (c < int(used_by.size()) && used_by[c] == v) ++c;
+    if (c == int(used_by.size())) {
+      used_by.push_back(-1);
+      classes.emplace_back();
+    }
+    colour[v] = c;
+    classes[c].push_back(v);
+  }
+  return classes;
+}
+
+template <class Traits>
+class Node_smoother {
+ public:
+  Node_smoother(Polygon_arrays& mesh, const Cubic_surface& surface, const std::vector<bool>& fixed,
+                const Node_smoothing_settings& settings, const Traits& traits)
+      : mesh_(mesh), surface_(surface), fixed_(fixed), settings_(settings), traits_(traits) {
+    host_.resize(mesh.points.size());
+    for (std::size_t v = 0; v < host_.size(); ++v)
+      host_[v] = v < surface.number_of_vertices() ? surface.triangle_of_vertex(int(v)) : -1;
+    classes_ = independent_sets(mesh, fixed);
+    stale_.assign(mesh.points.size(), 1);
+  }
+
+  /// Runs the sweeps; `progress(fraction)` returns false to cancel between colour classes.
+  template <class Progress>
+  Node_smoothing_statistics run(Progress&& progress) {
+    Node_smoothing_statistics statistics;
+    std::size_t free_nodes = 0;
+    for (const auto& c : classes_) free_nodes += c.size();
+    if (free_nodes == 0) {
+      statistics.converged = true;
+      return statistics;
+    }
+    for (int sweep = 0; sweep < settings_.max_sweeps; ++sweep) {
+      double gain = 0;
+      for (std::size_t c = 0; c < classes_.size(); ++c) {
+        gain += process_class(classes_[c], sweep, statistics);
+        if (!progress((sweep + double(c + 1) / classes_.size()) / settings_.max_sweeps)) {
+          statistics.cancelled = true;
+          statistics.sweeps = sweep + 1;
+          return statistics;
+        }
+      }
+      statistics.sweeps = sweep + 1;
+      if (gain == 0) {  // no node found a move worth min_gain: the mesh has converged
+        statistics.converged = true;
+        break;
+      }
+    }
+    return statistics;
+  }
+
+ private:
+  struct Move {
+    double gain = 0;
+    bool moved = false, rejected = false;
+  };
+
+  // A node is searched again only when it or a node of its elements moved since its last search
+  // (its fitness landscape is otherwise unchanged); the first sweep searches every node.
+  double process_class(const std::vector<int>& nodes, int sweep,
+                       Node_smoothing_statistics& statistics) {
+    std::vector<Move> moves(nodes.size());
+    auto body = [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i)
+        if (stale_[nodes[i]]) moves[i] = smooth_node(nodes[i], sweep);
+    };
+#ifdef CGAL_LINKED_WITH_TBB
+    if (settings_.threads > 1 && nodes.size() > 64) {
+      tbb::task_arena arena(settings_.threads);
+      arena.execute([&] {
+        tbb::parallel_for(
+            tbb::blocked_range<std::size_t>(0, nodes.size(), 64),
+            [&](const tbb::blocked_range<std::size_t>& r) { body(r.begin(), r.end()); });
+      });
+    } else {
+      body(0, nodes.size());
+    }
+#else
+    body(0, nodes.size());
+#endif
+    double gain = 0;  // summed in node order, so it does not depend on the threads either
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      const Move& m = moves[i];
+      gain += m.gain;
+      statistics.moves += m.moved;
+      statistics.rejected_folds += m.rejected;
+      stale_[nodes[i]] = m.moved;
+      if (m.moved) mark_neighbours_stale(nodes[i]);
+    }
+    return gain;
+  }
+
+  void mark_neighbours_stale(int v) {
+    for (int k = mesh_.incidence_start[v]; k < mesh_.incidence_start[v + 1]; ++k) {
+      const int f = mesh_.incidence[k];
+      for (int i = 0; i < mesh_.degree(f); ++i) stale_[mesh_.faces[f][i]] = 1;
+    }
+  }
+
+  Move smooth_node(int v, int sweep) {
+    const Node_star star(mesh_, v);
+    if (star.elements().empty() || host_[v] < 0) return {};
+    const double current = star.fitness(mesh_.points[v]);
+    Splitmix64 random(settings_.seed * 0x9E3779B97F4A7C15ull ^ (std::uint64_t(v) << 20) ^
+                      std::uint64_t(sweep));
+    Vec3 best_position;
+    const double best = settings_.optimizer == Node_optimizer::micro_ga
+                            ? micro_ga_search(star, random, best_position)
+                            : conjugate_gradient_search(star, best_position);
+    Move move;
+    if (!(best > current + settings_.min_gain)) return move;
+    if (!star.keeps_orientation(best_position, traits_)) {
+      move.rejected = true;
+      return move;
+    }
+    host_[v] = surface_.locate(best_position, host_[v]).triangle;
+    mesh_.points[v] = best_position;
+    move.moved = true;
+    move.gain = best - current;
+    return move;
+  }
+
+  Vec3 on_surface(const Vec3& p, int start) const {
+    int host = start;
+    return surface_.project(p, host);
+  }
+
+  // Steps 3-7: one micro-GA per adjacent element; the best over the elements wins.
+  double micro_ga_search(const Node_star& star, Splitmix64& random, Vec3& best_position) const {
+    double best = -1;
+    const int start = host_[star.node()];
+    for (std::size_t e = 0; e < star.elements().size(); ++e) {
+      Vec3 v1, v2, v3;
+      star.search_triangle(e, v1, v2, v3);
+      auto position = [&](double r1, double r2) {  // eq. 3
+        return on_surface((1 - r2) * v1 + (r2 * (1 - r1)) * v2 + (r1 * r2) * v3, start);
+      };
+      const auto result =
+          run_micro_ga([&](double r1, double r2) { return star.fitness(position(r1, r2)); },
+                       settings_.ga, random);
+      if (result[0] > best) {
+        best = result[0];
+        best_position = position(result[1], result[2]);
+      }
+    }
+    return best;
+  }
+
+  // The paper's baseline (Garimella et al.): Polak-Ribiere conjugate gradient on the fitness
+  // over the node's tangent plane, central-difference gradient, backtracking line search, each
+  // trial mapped onto the surface. `max_generations` bounds the CG iterations.
+  double conjugate_gradient_search(const Node_star& star, Vec3& best_position) const {
+    const int v = star.node();
+    const Vec3 origin = mesh_.points[v];
+    Vec3 normal;
+    double edge_length = 0;
+    for (const auto& element : star.elements()) {
+      normal += normalized(element.reference_normal);
+      edge_length += length(mesh_.points[element.ring[1]] - origin);
+    }
+    edge_length /= double(star.elements().size());
+    Vec3 t1, t2;
+    tangent_frame(normalized(normal), t1, t2);
+    const int start = host_[v];
+    auto objective = [&](const Eigen::Vector2d& x) {
+      return star.fitness(on_surface(origin + x[0] * t1 + x[1] * t2, start));
+    };
+    const double h = 1e-3 * edge_length;
+    auto gradient = [&](const Eigen::Vector2d& x) {
+      Eigen::Vector2d g;
+      for (int i = 0; i < 2; ++i) {
+        Eigen::Vector2d step = Eigen::Vector2d::Zero();
+        step[i] = h;
+        g[i] = (objective(x + step) - objective(x - step)) / (2 * h);
+      }
+      return g;
+    };
+    Eigen::Vector2d x = Eigen::Vector2d::Zero();
+    double value = objective(x);
+    Eigen::Vector2d g = gradient(x), direction = g;
+    for (int iteration = 0; iteration < settings_.ga.max_generations; ++iteration) {
+      if (direction.norm() == 0) break;
+      double step = 0.2 * edge_length / direction.norm();
+      bool improved = false;
+      for (int halving = 0; halving < 8 && !improved; ++halving, step *= 0.5) {
+        const double trial = objective(x + step * direction);
+        if (trial > value) {
+          x += step * direction;
+          value = trial;
+          improved = true;
+        }
+      }
+      if (!improved) break;
+      const Eigen::Vector2d new_g = gradient(x);
+      const double beta = std::max(0.0, new_g.dot(new_g - g) / std::max(g.dot(g), 1e-300));
+      direction = new_g + beta * direction;
+      g = new_g;
+    }
+    best_position = on_surface(origin + x[0] * t1 + x[1] * t2, start);
+    return value;
+  }
+
+  Polygon_arrays& mesh_;
+  const Cubic_surface& surface_;
+  const std::vector<bool>& fixed_;
+  Node_smoothing_settings settings_;
+  const Traits& traits_;
+  std::vector<int> host_;
+  std::vector<char> stale_;
+  std::vector<std::vector<int>> classes_;
+};
+
+}  // namespace internal
+}  // namespace Mesh_repair
+}  // namespace CGAL
+
+#endif  // CGAL_MESH_REPAIR_INTERNAL_MGA_NODE_SMOOTHING_H

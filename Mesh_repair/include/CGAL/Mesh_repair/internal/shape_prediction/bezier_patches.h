@@ -1,0 +1,248 @@
+// Copyright (c) 2026 Mesh_repair developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_MESH_REPAIR_INTERNAL_SHAPE_PREDICTION_BEZIER_PATCHES_H
+#define CGAL_MESH_REPAIR_INTERNAL_SHAPE_PREDICTION_BEZIER_PATCHES_H
+
+// Quartic triangular Bezier patches of Walton and Meek, thesis 5.5 (eq. 5.14-5.30): one patch
+// per triangle of the initial (GA) triangulation, built from the triangle's three vertices and
+// their unit normals only. Boundary curves are the point-normal cubics of thesis 4.3.1 with the
+// chord as tangent direction, so two triangles sharing an edge share its curve; the interior
+// control points blend the cross-boundary constructions G_{i,1}, G_{i,2} so that the tangent
+// plane along a shared edge is the same from both sides (G1).
+// `Bezier_patch_network::map` locates a point on the network (eq. 5.31) and returns the point of
+// the patch with the same barycentric coordinates (eq. 5.17).
+
+#include <CGAL/Mesh_repair/internal/cubic_curves.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Mesh_repair {
+namespace internal {
+namespace shape_prediction {
+
+/// One quartic triangular Bezier patch S(u,v,w) over the triangle (a, b, c): S(1,0,0) = a,
+/// S(0,1,0) = b, S(0,0,1) = c, with the given unit normals there.
+template <class Kernel>
+class Quartic_triangle_patch {
+ public:
+  using Point_3 = typename Kernel::Point_3;
+  using Vector_3 = typename Kernel::Vector_3;
+
+  Quartic_triangle_patch(const std::array<Point_3, 3>& corner,
+                         const std::array<Vector_3, 3>& normal) {
+    // Corners: A = P400 (u), B = P040 (v), C = P004 (w). Curve 0: C -> B, 1: B -> A, 2: A -> C.
+    const Point_3 A = corner[0], B = corner[1], C = corner[2];
+    const Vector_3 NA = normal[0], NB = normal[1], NC = normal[2];
+    const std::array<Point_3, 3> start{C, B, A}, end{B, A, C};
+    const std::array<Vector_3, 3> n_start{NC, NB, NA}, n_end{NB, NA, NC};
+    std::array<std::array<Point_3, 4>, 3> cubic;
+    std::array<std::array<Point_3, 5>, 3> quartic;
+    for (int i = 0; i < 3; ++i) {
+      cubic[i] = boundary_cubic(start[i], n_start[i], end[i], n_end[i]);
+      quartic[i] = elevate(cubic[i]);  // eq. 5.18
+    }
+    for (int j = 0; j <= 4; ++j) {  // eq. 5.19
+      control(0, j, 4 - j) = quartic[0][j];
+      control(j, 4 - j, 0) = quartic[1][j];
+      control(4 - j, 0, j) = quartic[2][j];
+    }
+    for (int i = 0; i < 3; ++i) {
+      const Vector_3 d0 = cross_boundary(i, 0), d3 = cross_boundary(i, 3);  // eq. 5.24-5.26
+      interior_g(i, cubic[i], n_start[i], n_end[i], d0, d3, g_[i][0], g_[i][1]);
+    }
+  }
+
+  /// Eq. 5.17 with the interior control points of eq. 5.27-5.29; u + v + w = 1.
+  Point_3 operator()(double u, double v, double w) const {
+    std::array<Point_3, 3> inner = interior(u, v, w);
+    double xyz[3] = {0, 0, 0};
+    for (int i = 0; i <= 4; ++i) {
+      for (int j = 0; i + j <= 4; ++j) {
+        const int k = 4 - i - j;
+        const double b = multinomial(i, j, k) * power(u, i) * power(v, j) * power(w, k);
+        const Point_3& p = (i == 1 && j == 1)   ? inner[0]
+                           : (i == 1 && k == 1) ? inner[1]
+                           : (j == 1 && k == 1) ? inner[2]
+                                                : control_[index(i, j)];
+        xyz[0] += b * CGAL::to_double(p.x());
+        xyz[1] += b * CGAL::to_double(p.y());
+        xyz[2] += b * CGAL::to_double(p.z());
+      }
+    }
+    return Point_3(xyz[0], xyz[1], xyz[2]);
+  }
+
+  const Point_3& boundary_control(int i, int j) const { return control_[index(i, j)]; }
+
+ private:
+  static int index(int i, int j) { return i * 5 + j; }  // k = 4 - i - j
+  Point_3& control(int i, int j, int /*k*/) { return control_[index(i, j)]; }
+  const Point_3& control(int i, int j, int /*k*/) const { return control_[index(i, j)]; }
+
+  static double power(double x, int e) {
+    double r = 1;
+    for (int k = 0; k < e; ++k) r *= x;
+    return r;
+  }
+  static double multinomial(int i, int j, int k) {
+    static const double factorial[5] = {1, 1, 2, 6, 24};
+    return 24.0 / (factorial[i] * factorial[j] * factorial[k]);
+  }
+
+  // Eq. 4.2-4.7 with the chord direction as tangent at both ends (Walton and Meek): the curve of
+  // an edge depends on the edge only, so neighbouring patches share it.
+  static std::array<Point_3, 4> boundary_cubic(const Point_3& q0, const Vector_3& n0,
+                                               const Point_3& q1, const Vector_3& n1) {
+    Vector_3 chord = q1 - q0;
+    const double length = std::sqrt(CGAL::to_double(chord.squared_length()));
+    if (length > 0) chord = chord / length;
+    return make_cubic_boundary_curve(q0, n0, chord, q1, n1, chord).control;
+  }
+
+  static std::array<Point_3, 5> elevate(const std::array<Point_3, 4>& v) {
+    std::array<Point_3, 5> e;
+    e[0] = v[0];
+    e[4] = v[3];
+    for (int j = 1; j <= 3; ++j)
+      e[j] = CGAL::ORIGIN +
+             ((j * (v[j - 1] - CGAL::ORIGIN)) + ((4 - j) * (v[j] - CGAL::ORIGIN))) / 4.0;
+    return e;
+  }
+
+  Vector_3 cross_boundary(int curve, int j) const {
+    auto mid = [](const Point_3& p, const Point_3& q) { return CGAL::midpoint(p, q); };
+    switch (curve) {
+      case 0:
+        return control(1, j, 3 - j) - mid(control(0, j + 1, 3 - j), control(0, j, 4 - j));
+      case 1:
+        return control(j, 3 - j, 1) - mid(control(j + 1, 3 - j, 0), control(j, 4 - j, 0));
+      default:
+        return control(3 - j, 1, j) - mid(control(3 - j, 0, j + 1), control(4 - j, 0, j));
+    }
+  }
+
+  static Vector_3 unit(const Vector_3& v) {
+    const double l = std::sqrt(CGAL::to_double(v.squared_length()));
+    return l > 0 ? v / l : v;
+  }
+
+  // Eq. 5.20-5.23.
+  static void interior_g(int /*curve*/, const std::array<Point_3, 4>& v, const Vector_3& n0,
+                         const Vector_3& n1, const Vector_3& d0, const Vector_3& d3, Point_3& g1,
+                         Point_3& g2) {
+    const Vector_3 w0 = v[1] - v[0], w1 = v[2] - v[1], w2 = v[3] - v[2];
+    const Vector_3 a0 = unit(CGAL::cross_product(n0, w0));
+    const Vector_3 a2 = unit(CGAL::cross_product(n1, w2));
+    const Vector_3 a1 = unit(a0 + a2);
+    const double ww0 = CGAL::to_double(w0 * w0), ww2 = CGAL::to_double(w2 * w2);
+    const double lambda0 = ww0 > 0 ? CGAL::to_double(d0 * w0) / ww0 : 0;
+    const double lambda1 = ww2 > 0 ? CGAL::to_double(d3 * w2) / ww2 : 0;
+    const double mu0 = CGAL::to_double(d0 * a0), mu1 = CGAL::to_double(d3 * a2);
+    const Vector_3 v0 = v[0] - CGAL::ORIGIN, v1 = v[1] - CGAL::ORIGIN, v2 = v[2] - CGAL::ORIGIN,
+                   v3 = v[3] - CGAL::ORIGIN;
+    g1 = CGAL::ORIGIN + (v0 + 5 * v1 + 2 * v2) / 8.0 + (2.0 / 3) * lambda0 * w1 +
+         (1.0 / 3) * lambda1 * w0 + (2.0 / 3) * mu0 * a1 + (1.0 / 3) * mu1 * a0;
+    g2 = CGAL::ORIGIN + (2 * v1 + 5 * v2 + v3) / 8.0 + (1.0 / 3) * lambda0 * w2 +
+         (2.0 / 3) * lambda1 * w1 + (1.0 / 3) * mu0 * a2 + (2.0 / 3) * mu1 * a1;
+  }
+
+  // Eq. 5.27-5.29: returns {P_{1,1,2}, P_{1,2,1}, P_{2,1,1}} at (u, v, w).
+  std::array<Point_3, 3> interior(double u, double v, double w) const {
+    auto blend = [](double a, const Point_3& pa, double b, const Point_3& pb) {
+      if (a + b <= 0) return CGAL::midpoint(pa, pb);  // at the opposite corner: weight zero
+      return CGAL::ORIGIN + (a * (pa - CGAL::ORIGIN) + b * (pb - CGAL::ORIGIN)) / (a + b);
+    };
+    return {blend(u, g_[2][1], v, g_[0][0]), blend(w, g_[0][1], u, g_[1][0]),
+            blend(v, g_[1][1], w, g_[2][0])};
+  }
+
+  std::array<Point_3, 25> control_;
+  std::array<std::array<Point_3, 2>, 3> g_;  // G_{i,1}, G_{i,2}
+};
+
+/// The patches over every triangle of a triangulation, and the mapping of eq. 5.31.
+template <class Kernel>
+class Bezier_patch_network {
+ public:
+  using Point_3 = typename Kernel::Point_3;
+  using Vector_3 = typename Kernel::Vector_3;
+
+  Bezier_patch_network(const std::vector<Point_3>& points, const std::vector<Vector_3>& normals,
+                       const std::vector<std::array<int, 3>>& triangles)
+      : points_(points), triangles_(triangles) {
+    patches_.reserve(triangles.size());
+    for (const auto& t : triangles)
+      patches_.emplace_back(std::array<Point_3, 3>{points[t[0]], points[t[1]], points[t[2]]},
+                            std::array<Vector_3, 3>{normals[t[0]], normals[t[1]], normals[t[2]]});
+  }
+
+  std::size_t size() const { return patches_.size(); }
+  const Quartic_triangle_patch<Kernel>& patch(std::size_t i) const { return patches_[i]; }
+  const std::array<int, 3>& triangle(std::size_t i) const { return triangles_[i]; }
+
+  /// Eq. 5.31 then 5.17: the normal projection x' of `x` onto the nearest triangle of the
+  /// network, its barycentric coordinates there (clamped into the triangle when x' falls
+  /// outside every triangle), and the patch point with those coordinates.
+  Point_3 map(const Point_3& x) const {
+    std::size_t best = 0;
+    std::array<double, 3> best_bary{1.0 / 3, 1.0 / 3, 1.0 / 3};
+    double best_distance = std::numeric_limits<double>::infinity();
+    for (std::size_t t = 0; t < triangles_.size(); ++t) {
+      std::array<double, 3> bary{1.0 / 3, 1.0 / 3, 1.0 / 3};
+      const double d = projected_distance(t, x, bary);
+      if (d < best_distance) {
+        best_distance = d;
+        best = t;
+        best_bary = bary;
+      }
+    }
+    return patches_[best](best_bary[0], best_bary[1], best_bary[2]);
+  }
+
+ private:
+  // Squared distance from x to its closest point on triangle t, with that point's barycentric
+  // coordinates (the normal projection when it falls inside, eq. 5.31).
+  double projected_distance(std::size_t t, const Point_3& x, std::array<double, 3>& bary) const {
+    const Point_3& a = points_[triangles_[t][0]];
+    const Point_3& b = points_[triangles_[t][1]];
+    const Point_3& c = points_[triangles_[t][2]];
+    const Vector_3 ab = b - a, ac = c - a, ax = x - a;
+    const double d00 = CGAL::to_double(ab * ab), d01 = CGAL::to_double(ab * ac),
+                 d11 = CGAL::to_double(ac * ac);
+    const double d20 = CGAL::to_double(ax * ab), d21 = CGAL::to_double(ax * ac);
+    const double det = d00 * d11 - d01 * d01;
+    if (!(det > 0)) return std::numeric_limits<double>::infinity();
+    double v = (d11 * d20 - d01 * d21) / det;
+    double w = (d00 * d21 - d01 * d20) / det;
+    double u = 1 - v - w;
+    if (u < 0 || v < 0 || w < 0) {
+      u = std::max(u, 0.0);
+      v = std::max(v, 0.0);
+      w = std::max(w, 0.0);
+      const double s = u + v + w;
+      u /= s;
+      v /= s;
+      w /= s;
+    }
+    bary = {u, v, w};
+    const Point_3 p =
+        CGAL::ORIGIN + u * (a - CGAL::ORIGIN) + v * (b - CGAL::ORIGIN) + w * (c - CGAL::ORIGIN);
+    return CGAL::to_double(CGAL::squared_distance(x, p));
+  }
+
+  std::vector<Point_3> points_;
+  std::vector<std::array<int, 3>> triangles_;
+  std::vector<Quartic_triangle_patch<Kernel>> patches_;
+};
+
+}  // namespace shape_prediction
+}  // namespace internal
+}  // namespace Mesh_repair
+}  // namespace CGAL
+
+#endif  // CGAL_MESH_REPAIR_INTERNAL_SHAPE_PREDICTION_BEZIER_PATCHES_H

@@ -1,0 +1,594 @@
+// Copyright (c) 2026 Mesh_repair developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_MESH_REPAIR_INTERNAL_STITCHING_GAP_STITCHER_H
+#define CGAL_MESH_REPAIR_INTERNAL_STITCHING_GAP_STITCHER_H
+
+// The machinery of stitch_gaps() and repair_t_junctions() (thesis 4.2, 4.3, 4.3.1).
+//
+// The mesh stays a valid halfedge mesh throughout: nodes are never merged directly (that would
+// create non-manifold vertices between two borders). Instead they are grouped in clusters, each
+// cluster's members are moved to one merge point, T-junction nodes are inserted with Euler
+// operations, and finally the border halfedges whose end clusters match in opposite directions
+// are glued with CGAL's `stitch_borders`, which merges the vertices along them.
+
+#include <CGAL/Mesh_repair/internal/cubic_curves.h>
+#include <CGAL/Mesh_repair/internal/stitching/merge_point.h>
+#include <CGAL/Mesh_repair/internal/stitching/stitch_result.h>
+#include <CGAL/Mesh_repair/visitor.h>
+
+#include <CGAL/Box_intersection_d/Box_with_info_d.h>
+#include <CGAL/Kd_tree.h>
+#include <CGAL/Fuzzy_sphere.h>
+#include <CGAL/Search_traits_3.h>
+#include <CGAL/Search_traits_adapter.h>
+#include <CGAL/box_intersection_d.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/property_map.h>
+#include <CGAL/Polygon_mesh_processing/stitch_borders.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Mesh_repair {
+namespace internal {
+
+struct Stitch_settings {
+  double merge_tolerance = -1;  ///< absolute; negative: derived from local border edge lengths
+  double default_tolerance_fraction = 0.5;  ///< of the shortest incident border edge
+  bool merge_nodes = true;  ///< node pairs within tolerance (4.2); false: exactly coincident only
+  bool repair_t_junctions = true;  ///< node insertion into edges (thesis 4.3)
+  bool use_cubic_curves = true;    ///< T-junction nodes on the boundary curve (4.3.1)
+  int max_t_junction_passes = 8;
+};
+
+using Vec3 = std::array<double, 3>;
+inline Vec3 operator-(const Vec3& a, const Vec3& b) {
+  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
+inline double dot3(const Vec3& a, const Vec3& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+inline double distance3(const Vec3& a, const Vec3& b) {
+  return std::sqrt(dot3(a - b, a - b));
+}
+
+template <class PolygonMesh, class VertexPointMap, class GeomTraits, class Visitor>
+class Gap_stitcher {
+  using Graph_traits = boost::graph_traits<PolygonMesh>;
+  using vertex_descriptor = typename Graph_traits::vertex_descriptor;
+  using halfedge_descriptor = typename Graph_traits::halfedge_descriptor;
+  using face_descriptor = typename Graph_traits::face_descriptor;
+  using Point = typename GeomTraits::Point_3;
+  using Vector = typename GeomTraits::Vector_3;
+  using Node_id_map =
+      typename boost::property_map<PolygonMesh, CGAL::dynamic_vertex_property_t<std::size_t>>::type;
+  static constexpr std::size_t no_node = 0;  // node ids are stored +1 so 0 means "not a node"
+
+ public:
+  Gap_stitcher(PolygonMesh& pm, VertexPointMap vpm, const Stitch_settings& settings,
+               Visitor& visitor)
+      : pm_(pm),
+        vpm_(vpm),
+        settings_(settings),
+        visitor_(visitor),
+        node_of_(get(CGAL::dynamic_vertex_property_t<std::size_t>(), pm)) {}
+
+  Stitch_result run() {
+    result_.border_edges_before = count_border_edges();
+    visitor_.start_step("stitch coincident borders");
+    result_.coincident_edges_stitched = CGAL::Polygon_mesh_processing::stitch_borders(
+        pm_, CGAL::parameters::vertex_point_map(vpm_));
+    visitor_.end_step("stitch coincident borders");
+    collect_border_nodes();
+    if (!cancelled()) pair_nodes();
+    if (!cancelled()) place_clusters(false);
+    for (int pass = 0;
+         settings_.repair_t_junctions && pass < settings_.max_t_junction_passes && !cancelled();
+         ++pass) {
+      if (t_junction_pass() == 0) break;
+      place_clusters(false);
+    }
+    if (!cancelled()) {
+      place_clusters(true);
+      stitch_clusters();
+    }
+    result_.border_edges_after = count_border_edges();
+    result_.cancelled = cancelled();
+    return result_;
+  }
+
+ private:
+  // ---- nodes and clusters -------------------------------------------------------------------
+
+  Vec3 position(vertex_descriptor v) const {
+    const Point& p = get(vpm_, v);
+    return {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+  }
+
+  std::size_t node(vertex_descriptor v) const { return get(node_of_, v); }
+
+  std::size_t add_node(vertex_descriptor v, const Vec3& normal, double tolerance) {
+    node_vertex_.push_back(v);
+    node_original_.push_back(position(v));
+    node_normal_.push_back(normal);
+    node_tolerance_.push_back(tolerance);
+    parent_.push_back(node_vertex_.size() - 1);
+    cluster_members_.emplace_back();
+    put(node_of_, v, node_vertex_.size());
+    return node_vertex_.size() - 1;
+  }
+
+  std::size_t root(std::size_t id) {
+    while (parent_[id] != id) id = parent_[id] = parent_[parent_[id]];
+    return id;
+  }
+
+  /// Members of the cluster rooted at `r`; a node alone is its own cluster.
+  const std::vector<std::size_t>& members(std::size_t r) {
+    if (cluster_members_[r].empty()) cluster_members_[r].push_back(r);
+    return cluster_members_[r];
+  }
+
+  void unite(std::size_t ra, std::size_t rb) {
+    members(ra);
+    const std::vector<std::size_t>& other = members(rb);
+    cluster_members_[ra].insert(cluster_members_[ra].end(), other.begin(), other.end());
+    std::vector<std::size_t>().swap(cluster_members_[rb]);
+    parent_[rb] = ra;
+  }
+
+  /// Roots of the clusters of two or more nodes.
+  std::vector<std::size_t> cluster_roots() const {
+    std::vector<std::size_t> roots;
+    for (std::size_t id = 0; id < parent_.size(); ++id)
+      if (parent_[id] == id && cluster_members_[id].size() > 1) roots.push_back(id);
+    return roots;
+  }
+
+  bool share_face(vertex_descriptor x, vertex_descriptor y) const {
+    if (x == y) return true;
+    for (halfedge_descriptor h : halfedges_around_target(x, pm_)) {
+      if (is_border(h, pm_)) continue;
+      for (vertex_descriptor w : vertices_around_face(h, pm_))
+        if (w == y) return true;
+    }
+    return false;
+  }
+
+  double pair_tolerance(std::size_t a, std::size_t b) const {
+    if (!settings_.merge_nodes) return 0.0;
+    return std::min(node_tolerance_[a], node_tolerance_[b]);
+  }
+
+  /// Complete linkage: every pair of the joined cluster is within tolerance and of no common face.
+  bool can_unite(std::size_t ra, std::size_t rb) {
+    for (std::size_t x : members(ra)) {
+      for (std::size_t y : members(rb)) {
+        if (share_face(node_vertex_[x], node_vertex_[y])) {
+          ++result_.rejected_same_face;
+          return false;
+        }
+        if (distance3(node_original_[x], node_original_[y]) > pair_tolerance(x, y)) {
+          ++result_.rejected_too_far;
+          return false;
+        }
+      }
+    }
+    return true;
+  }
+
+  // ---- step 1: border nodes, normals (eq. 4.1) and local tolerances -----------------------
+
+  Vec3 node_normal(vertex_descriptor v) const {
+    std::vector<std::pair<Vector, double>> weighted;
+    for (halfedge_descriptor h : halfedges_around_target(v, pm_)) {
+      if (is_border(h, pm_)) continue;
+      const Point& p = get(vpm_, v);
+      const Point& before = get(vpm_, source(h, pm_));
+      const Point& after = get(vpm_, target(next(h, pm_), pm_));
+      const Vector u = before - p, w = after - p;
+      const Vector n = CGAL::cross_product(w, u);
+      const double length = std::sqrt(CGAL::to_double(n.squared_length()));
+      const double lu = std::sqrt(CGAL::to_double(u.squared_length()));
+      const double lw = std::sqrt(CGAL::to_double(w.squared_length()));
+      if (length == 0 || lu == 0 || lw == 0) continue;
+      const double angle = std::atan2(length, CGAL::to_double(u * w));
+      weighted.emplace_back(n / length, angle);
+    }
+    const Vector n = angle_weighted_normal<Vector>(weighted);
+    return {CGAL::to_double(n.x()), CGAL::to_double(n.y()), CGAL::to_double(n.z())};
+  }
+
+  void collect_border_nodes() {
+    visitor_.start_step("border nodes");
+    const bool derived = settings_.merge_tolerance < 0;
+    const double infinity = std::numeric_limits<double>::infinity();
+    for (halfedge_descriptor h : halfedges(pm_)) {
+      if (!is_border(h, pm_)) continue;
+      const vertex_descriptor a = source(h, pm_), b = target(h, pm_);
+      const double local =
+          settings_.default_tolerance_fraction * distance3(position(a), position(b));
+      for (vertex_descriptor v : {a, b}) {
+        if (node(v) == no_node)
+          add_node(v, node_normal(v), derived ? infinity : settings_.merge_tolerance);
+        if (derived) {
+          double& tolerance = node_tolerance_[node(v) - 1];
+          tolerance = std::min(tolerance, local);
+        }
+      }
+    }
+    result_.border_nodes = node_vertex_.size();
+    result_.tolerance_derived = derived;
+    if (!node_tolerance_.empty()) {
+      result_.merge_tolerance = *std::max_element(node_tolerance_.begin(), node_tolerance_.end());
+      result_.min_local_tolerance =
+          *std::min_element(node_tolerance_.begin(), node_tolerance_.end());
+    } else {
+      result_.merge_tolerance = result_.min_local_tolerance =
+          std::max(0.0, settings_.merge_tolerance);
+    }
+    visitor_.end_step("border nodes");
+  }
+
+  // ---- step 2: node pairs within tolerance, greedily by distance (kd-tree) -----------------
+
+  void pair_nodes() {
+    visitor_.start_step("pair border nodes");
+    using Base_traits = CGAL::Search_traits_3<GeomTraits>;
+    using Point_map = typename CGAL::Pointer_property_map<Point>::type;
+    using Traits = CGAL::Search_traits_adapter<std::size_t, Point_map, Base_traits>;
+    using Tree = CGAL::Kd_tree<Traits>;
+    using Sphere = CGAL::Fuzzy_sphere<Traits>;
+    std::vector<Point> points;
+    points.reserve(node_vertex_.size());
+    for (const Vec3& p : node_original_) points.emplace_back(p[0], p[1], p[2]);
+    Point_map point_map = CGAL::make_property_map(points);
+    std::vector<std::size_t> ids(points.size());
+    for (std::size_t i = 0; i < ids.size(); ++i) ids[i] = i;
+    Tree tree(ids.begin(), ids.end(), typename Tree::Splitter(), Traits(point_map));
+    tree.build();
+
+    std::vector<std::tuple<double, std::size_t, std::size_t>> candidates;
+    std::vector<std::size_t> found;
+    Progress_reporter<Visitor> report(visitor_, points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      if (!report(i)) return;
+      found.clear();
+      const double radius = settings_.merge_nodes ? node_tolerance_[i] : 0.0;
+      tree.search(std::back_inserter(found), Sphere(points[i], radius, 0, tree.traits()));
+      for (std::size_t j : found) {
+        if (j <= i) continue;
+        const double d = distance3(node_original_[i], node_original_[j]);
+        if (d <= pair_tolerance(i, j)) candidates.emplace_back(d, i, j);
+      }
+    }
+    std::sort(candidates.begin(), candidates.end());
+    for (const auto& [d, i, j] : candidates) {
+      const std::size_t ri = root(i), rj = root(j);
+      if (ri == rj || !can_unite(ri, rj)) continue;
+      unite(ri, rj);
+      ++result_.node_merges;
+    }
+    visitor_.end_step("pair border nodes");
+  }
+
+  // ---- step 3: every cluster moves to its merge point (thesis 4.2, Figure 4.2) ----------------
+
+  void place_clusters(bool final_placement) {
+    for (std::size_t r : cluster_roots()) {
+      const std::vector<std::size_t>& cluster = cluster_members_[r];
+      std::vector<Merge_node> merge_nodes;
+      double tolerance = std::numeric_limits<double>::infinity();
+      for (std::size_t id : cluster) {
+        merge_nodes.push_back({node_original_[id], node_normal_[id]});
+        tolerance = std::min(tolerance, node_tolerance_[id]);
+      }
+      bool used_planes = false;
+      const Vec3 target = merge_point(merge_nodes, tolerance, &used_planes);
+      if (final_placement) ++(used_planes ? result_.tangent_plane_merges : result_.midpoint_merges);
+      for (std::size_t id : cluster) {
+        put(vpm_, node_vertex_[id], Point(target[0], target[1], target[2]));
+        result_.max_displacement =
+            std::max(result_.max_displacement, distance3(node_original_[id], target));
+      }
+    }
+  }
+
+  // ---- step 4: T-junctions (thesis 4.3, Figures 4.4-4.6) --------------------------------------
+
+  struct Edge_hit {
+    double distance;
+    std::size_t edge;  // index into the border halfedges of the pass
+    double t;          // parameter of the projection along the edge
+    Vec3 point;        // where the new node goes (chord projection or boundary curve)
+  };
+
+  /// Unit tangent of the border at `v` between `before` and `after`, or the chord direction
+  /// when the border turns sharply there (a corner must not bend the curve).
+  Vector nodal_tangent(const Vec3& before, const Vec3& at, const Vec3& after,
+                       const Vector& chord) const {
+    const Vec3 in = at - before, out = after - at;
+    const double lin = std::sqrt(dot3(in, in)), lout = std::sqrt(dot3(out, out));
+    if (lin == 0 || lout == 0 || dot3(in, out) < std::cos(CGAL_PI / 6) * lin * lout) return chord;
+    const Vector t(after[0] - before[0], after[1] - before[1], after[2] - before[2]);
+    return t / std::sqrt(CGAL::to_double(t.squared_length()));
+  }
+
+  /// Where the node for `v` goes on the border halfedge `h` at chord parameter `t`: on the cubic
+  /// boundary curve (eq. 4.2-4.7) through the ends' normals when enabled, else on the chord.
+  Vec3 edge_point(halfedge_descriptor h, double t, const Vec3& v) const {
+    const Vec3 a = position(source(h, pm_)), b = position(target(h, pm_));
+    const Vec3 on_chord = {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]),
+                           a[2] + t * (b[2] - a[2])};
+    const std::size_t na = node(source(h, pm_)), nb = node(target(h, pm_));
+    if (!settings_.use_cubic_curves || na == no_node || nb == no_node) return on_chord;
+    const Vec3& normal_a = node_normal_[na - 1];
+    const Vec3& normal_b = node_normal_[nb - 1];
+    if (dot3(normal_a, normal_a) == 0 || dot3(normal_b, normal_b) == 0) return on_chord;
+    const double length = distance3(a, b);
+    const Vector chord((b[0] - a[0]) / length, (b[1] - a[1]) / length, (b[2] - a[2]) / length);
+    const Vector ta = nodal_tangent(position(source(prev(h, pm_), pm_)), a, b, chord);
+    const Vector tb = nodal_tangent(a, b, position(target(next(h, pm_), pm_)), chord);
+    const auto curve = make_cubic_boundary_curve(
+        Point(a[0], a[1], a[2]), Vector(normal_a[0], normal_a[1], normal_a[2]), ta,
+        Point(b[0], b[1], b[2]), Vector(normal_b[0], normal_b[1], normal_b[2]), tb);
+    const Point query(v[0], v[1], v[2]);
+    const double s = closest_curve_parameter(curve, query, t);
+    if (s <= 0 || s >= 1) return on_chord;
+    const Point p = curve(s);
+    return {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+  }
+
+  /// The border halfedge nearest to each border node whose interior it projects into, within
+  /// tolerance (box intersection, so no quadratic pass).
+  std::vector<std::pair<std::size_t, Edge_hit>> find_t_junctions(
+      const std::vector<halfedge_descriptor>& border, const std::vector<bool>& node_needed) {
+    using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::size_t>;
+    std::vector<Box> node_boxes, edge_boxes;
+    for (std::size_t id = 0; id < node_vertex_.size(); ++id) {
+      if (!node_needed[id]) continue;
+      const Vec3 p = position(node_vertex_[id]);
+      const double r = node_tolerance_[id];
+      double lo[3] = {p[0] - r, p[1] - r, p[2] - r}, hi[3] = {p[0] + r, p[1] + r, p[2] + r};
+      node_boxes.emplace_back(lo, hi, id);
+    }
+    for (std::size_t k = 0; k < border.size(); ++k) {
+      const Vec3 a = position(source(border[k], pm_)), b = position(target(border[k], pm_));
+      double lo[3], hi[3];
+      for (int i = 0; i < 3; ++i) lo[i] = std::min(a[i], b[i]), hi[i] = std::max(a[i], b[i]);
+      edge_boxes.emplace_back(lo, hi, k);
+    }
+    std::vector<Edge_hit> best(node_vertex_.size(),
+                               Edge_hit{std::numeric_limits<double>::infinity(), 0, 0, {}});
+    auto consider = [&](const Box& node_box, const Box& edge_box) {
+      const std::size_t id = node_box.info();
+      const halfedge_descriptor h = border[edge_box.info()];
+      const vertex_descriptor v = node_vertex_[id];
+      const vertex_descriptor a = source(h, pm_), b = target(h, pm_);
+      if (v == a || v == b) return;
+      const Vec3 pa = position(a), pb = position(b), pv = position(v);
+      const Vec3 ab = pb - pa;
+      const double length2 = dot3(ab, ab);
+      if (length2 == 0) return;
+      const double t = dot3(pv - pa, ab) / length2;
+      if (!(t > 0 && t < 1)) return;
+      const Vec3 projection = {pa[0] + t * ab[0], pa[1] + t * ab[1], pa[2] + t * ab[2]};
+      if (projection == pa || projection == pb) return;
+      double tolerance = node_tolerance_[id];
+      if (result_.tolerance_derived)
+        tolerance = std::min(tolerance, settings_.default_tolerance_fraction * std::sqrt(length2));
+      const double d = distance3(pv, projection);
+      if (d > tolerance || d >= best[id].distance) return;
+      best[id] = Edge_hit{d, edge_box.info(), t, projection};
+    };
+    CGAL::box_intersection_d(node_boxes.begin(), node_boxes.end(), edge_boxes.begin(),
+                             edge_boxes.end(), consider);
+    std::vector<std::pair<std::size_t, Edge_hit>> hits;
+    for (std::size_t id = 0; id < best.size(); ++id)
+      if (best[id].distance < std::numeric_limits<double>::infinity())
+        hits.emplace_back(id, best[id]);
+    return hits;
+  }
+
+  /// Whether node `id` may be merged with a new node inside border halfedge `h`: no node of its
+  /// cluster may share a face with the edge's ends (it would merge two nodes of one face).
+  bool may_join_edge(std::size_t id, halfedge_descriptor h) {
+    const std::size_t r = root(id);
+    for (vertex_descriptor end : {source(h, pm_), target(h, pm_)}) {
+      const std::size_t end_node = node(end);
+      if (end_node != no_node && root(end_node - 1) == r) return false;
+      for (std::size_t member : members(r))
+        if (share_face(node_vertex_[member], end)) return false;
+    }
+    return true;
+  }
+
+  std::size_t t_junction_pass() {
+    visitor_.start_step("T-junctions");
+    // Border edges already matched by a partner form conforming seams: only the others (and
+    // their nodes) can take part in a T-junction, so the search scales with the defects.
+    auto matched = get(CGAL::dynamic_halfedge_property_t<bool>(), pm_);
+    for (halfedge_descriptor h : halfedges(pm_)) put(matched, h, false);
+    for (const auto& [h1, h2] : matching_border_pairs()) {
+      put(matched, h1, true);
+      put(matched, h2, true);
+    }
+    std::vector<halfedge_descriptor> border;
+    std::vector<bool> node_needed(node_vertex_.size(), false);
+    for (halfedge_descriptor h : halfedges(pm_)) {
+      if (!is_border(h, pm_) || get(matched, h)) continue;
+      border.push_back(h);
+      for (vertex_descriptor v : {source(h, pm_), target(h, pm_)})
+        if (node(v) != no_node) node_needed[node(v) - 1] = true;
+    }
+    auto hits = find_t_junctions(border, node_needed);
+    // Group by edge, nodes in decreasing t (Figure 4.6: several nodes on one edge).
+    std::sort(hits.begin(), hits.end(), [](const auto& x, const auto& y) {
+      return std::make_pair(x.second.edge, -x.second.t) <
+             std::make_pair(y.second.edge, -y.second.t);
+    });
+    std::size_t splits = 0;
+    for (std::size_t begin = 0; begin < hits.size();) {
+      std::size_t end = begin;
+      while (end < hits.size() && hits[end].second.edge == hits[begin].second.edge) ++end;
+      splits += split_border_edge(border[hits[begin].second.edge], hits.begin() + begin,
+                                  hits.begin() + end);
+      begin = end;
+      if (cancelled()) break;
+    }
+    result_.t_junctions_split += splits;
+    visitor_.end_step("T-junctions");
+    return splits;
+  }
+
+  /// Inserts one node per hit into border halfedge `h` (hits sorted by decreasing t), splits the
+  /// incident triangle accordingly and puts each new node in the cluster of its hitting node.
+  template <class Iterator>
+  std::size_t split_border_edge(halfedge_descriptor h, Iterator first, Iterator last) {
+    std::vector<std::pair<std::size_t, Vec3>> accepted;  // node, point on the edge
+    std::vector<std::size_t> roots_used;
+    for (Iterator it = first; it != last; ++it) {
+      const std::size_t r = root(it->first);
+      if (std::find(roots_used.begin(), roots_used.end(), r) != roots_used.end()) continue;
+      if (!may_join_edge(it->first, h)) continue;
+      roots_used.push_back(r);
+      accepted.emplace_back(it->first,
+                            edge_point(h, it->second.t, position(node_vertex_[it->first])));
+    }
+    if (accepted.empty()) return 0;
+    halfedge_descriptor inner = opposite(h, pm_);  // in the triangle (a, b, c) along b -> a
+    if (is_border(inner, pm_)) return 0;
+    const Vec3 face_normal = triangle_normal(inner);
+    for (const auto& [id, point] : accepted) {
+      // inner runs from the remaining far end towards a; t decreases, so the new node lies on it.
+      const halfedge_descriptor to_new = CGAL::Euler::split_edge(inner, pm_);
+      const vertex_descriptor created = target(to_new, pm_);
+      put(vpm_, created, Point(point[0], point[1], point[2]));
+      CGAL::Euler::split_face(to_new, next(inner, pm_), pm_);
+      const std::size_t new_id = add_node(created, face_normal, node_tolerance_[id]);
+      unite(root(id), new_id);
+    }
+    return accepted.size();
+  }
+
+  Vec3 triangle_normal(halfedge_descriptor h) const {
+    const Vec3 a = position(source(h, pm_)), b = position(target(h, pm_)),
+               c = position(target(next(h, pm_), pm_));
+    const Vec3 u = b - a, w = c - a;
+    Vec3 n = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+    const double length = std::sqrt(dot3(n, n));
+    if (length == 0) return {0, 0, 0};
+    return {n[0] / length, n[1] / length, n[2] / length};
+  }
+
+  // ---- step 5: glue the border halfedges whose end clusters match -------------------------------
+
+  using Halfedge_pairs = std::vector<std::pair<halfedge_descriptor, halfedge_descriptor>>;
+
+  /// Border halfedges whose end clusters match exactly one border halfedge the other way.
+  Halfedge_pairs matching_border_pairs() {
+    struct Entry {
+      std::size_t low, high;
+      bool forward;
+      halfedge_descriptor h;
+    };
+    std::vector<Entry> entries;
+    for (halfedge_descriptor h : halfedges(pm_)) {
+      if (!is_border(h, pm_)) continue;
+      const std::size_t na = node(source(h, pm_)), nb = node(target(h, pm_));
+      if (na == no_node || nb == no_node) continue;
+      const std::size_t ra = root(na - 1), rb = root(nb - 1);
+      if (ra == rb) continue;
+      entries.push_back({std::min(ra, rb), std::max(ra, rb), ra < rb, h});
+    }
+    std::sort(entries.begin(), entries.end(), [](const Entry& x, const Entry& y) {
+      return std::tie(x.low, x.high, x.forward) < std::tie(y.low, y.high, y.forward);
+    });
+    Halfedge_pairs pairs;
+    for (std::size_t begin = 0; begin < entries.size();) {
+      std::size_t end = begin;
+      while (end < entries.size() && entries[end].low == entries[begin].low &&
+             entries[end].high == entries[begin].high)
+        ++end;
+      // Exactly one halfedge each way: gluing more would create a non-manifold edge.
+      if (end - begin == 2 && entries[begin].forward != entries[begin + 1].forward)
+        pairs.emplace_back(entries[begin].h, entries[begin + 1].h);
+      begin = end;
+    }
+    return pairs;
+  }
+
+  void stitch_clusters() {
+    visitor_.start_step("stitch merged nodes");
+    const Halfedge_pairs to_stitch = matching_border_pairs();
+    count_unstitched_clusters(to_stitch);
+    result_.edges_stitched = CGAL::Polygon_mesh_processing::stitch_borders(
+        pm_, to_stitch, CGAL::parameters::vertex_point_map(vpm_));
+    visitor_.end_step("stitch merged nodes");
+  }
+
+  /// Clusters whose nodes are not all joined by the glued edges stay separate vertices (at the
+  /// same place): a touching point, not a seam.
+  void count_unstitched_clusters(const Halfedge_pairs& to_stitch) {
+    std::vector<std::size_t> glued(node_vertex_.size());
+    for (std::size_t id = 0; id < glued.size(); ++id) glued[id] = id;
+    auto find = [&](std::size_t id) {
+      while (glued[id] != id) id = glued[id] = glued[glued[id]];
+      return id;
+    };
+    auto join = [&](vertex_descriptor x, vertex_descriptor y) {
+      glued[find(node(x) - 1)] = find(node(y) - 1);
+    };
+    for (const auto& [h1, h2] : to_stitch) {
+      join(source(h1, pm_), target(h2, pm_));
+      join(target(h1, pm_), source(h2, pm_));
+    }
+    for (std::size_t r : cluster_roots()) {
+      for (std::size_t id : cluster_members_[r]) {
+        if (find(id) != find(r)) {
+          ++result_.unstitched_clusters;
+          break;
+        }
+      }
+    }
+  }
+
+  std::size_t count_border_edges() const {
+    std::size_t count = 0;
+    for (halfedge_descriptor h : halfedges(pm_))
+      if (is_border(h, pm_)) ++count;
+    return count;
+  }
+
+  bool cancelled() {
+    if (!cancelled_) cancelled_ = !visitor_.progress(1.0);
+    return cancelled_;
+  }
+
+  PolygonMesh& pm_;
+  VertexPointMap vpm_;
+  Stitch_settings settings_;
+  Visitor& visitor_;
+  Node_id_map node_of_;
+  std::vector<vertex_descriptor> node_vertex_;
+  std::vector<Vec3> node_original_, node_normal_;
+  std::vector<double> node_tolerance_;
+  std::vector<std::size_t> parent_;
+  std::vector<std::vector<std::size_t>> cluster_members_;  // at roots; empty: a single node
+  bool cancelled_ = false;
+  Stitch_result result_;
+};
+
+}  // namespace internal
+}  // namespace Mesh_repair
+}  // namespace CGAL
+
+#endif  // CGAL_MESH_REPAIR_INTERNAL_STITCHING_GAP_STITCHER_H

@@ -1,0 +1,63 @@
+// Copyright (c) 2026 Mesh_repair developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_MESH_REPAIR_INTERNAL_STITCHING_STITCH_RESULT_H
+#define CGAL_MESH_REPAIR_INTERNAL_STITCHING_STITCH_RESULT_H
+
+#include <CGAL/Mesh_repair/internal/json.h>
+
+#include <cstddef>
+
+namespace CGAL {
+namespace Mesh_repair {
+
+/// What `stitch_gaps()` and `repair_t_junctions()` found and changed.
+struct Stitch_result {
+  /// Merge tolerance used: the value given, or, when derived from the local border edge lengths,
+  /// the largest local tolerance (see `min_local_tolerance`).
+  double merge_tolerance = 0;
+  bool tolerance_derived = false;  ///< true when no tolerance was given
+  double min_local_tolerance = 0;  ///< smallest local tolerance (equal to the given one if any)
+  std::size_t border_nodes = 0;    ///< border vertices examined (after exact stitching)
+  std::size_t border_edges_before = 0;
+  std::size_t border_edges_after = 0;
+  std::size_t coincident_edges_stitched = 0;  ///< by CGAL's `stitch_borders`, before anything else
+  std::size_t node_merges = 0;                ///< node pairs (or clusters) merged within tolerance
+  std::size_t rejected_same_face = 0;         ///< pairs refused: two nodes of one face
+  std::size_t rejected_too_far = 0;           ///< pairs refused: cluster would exceed tolerance
+  std::size_t t_junctions_split = 0;          ///< nodes inserted into border edges (thesis 4.3)
+  std::size_t tangent_plane_merges = 0;       ///< merge points on the tangent-plane line
+  std::size_t midpoint_merges = 0;            ///< merge points at the midpoint (fallback)
+  std::size_t edges_stitched = 0;             ///< border edge pairs glued after merging
+  std::size_t unstitched_clusters = 0;        ///< merged nodes whose borders could not be glued
+  double max_displacement = 0;                ///< largest vertex move
+  bool cancelled = false;                     ///< the visitor asked to stop
+  bool valid = true;                          ///< `is_valid_polygon_mesh` after the call
+};
+
+inline void write_json(internal::Json_writer& json, const Stitch_result& r) {
+  json.begin_object()
+      .field("merge_tolerance", r.merge_tolerance)
+      .field("tolerance_derived", r.tolerance_derived)
+      .field("min_local_tolerance", r.min_local_tolerance)
+      .field("border_nodes", r.border_nodes)
+      .field("border_edges_before", r.border_edges_before)
+      .field("border_edges_after", r.border_edges_after)
+      .field("coincident_edges_stitched", r.coincident_edges_stitched)
+      .field("node_merges", r.node_merges)
+      .field("rejected_same_face", r.rejected_same_face)
+      .field("rejected_too_far", r.rejected_too_far)
+      .field("t_junctions_split", r.t_junctions_split)
+      .field("tangent_plane_merges", r.tangent_plane_merges)
+      .field("midpoint_merges", r.midpoint_merges)
+      .field("edges_stitched", r.edges_stitched)
+      .field("unstitched_clusters", r.unstitched_clusters)
+      .field("max_displacement", r.max_displacement)
+      .field("cancelled", r.cancelled)
+      .field("valid", r.valid)
+      .end_object();
+}
+
+}  // namespace Mesh_repair
+}  // namespace CGAL
+
+#endif  // CGAL_MESH_REPAIR_INTERNAL_STITCHING_STITCH_RESULT_H

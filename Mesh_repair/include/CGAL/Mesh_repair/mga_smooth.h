@@ -1,0 +1,245 @@
+// Copyright (c) 2026 Mesh_repair developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_MESH_REPAIR_MGA_SMOOTH_H
+#define CGAL_MESH_REPAIR_MGA_SMOOTH_H
+
+/// \file mga_smooth.h
+/// Micro-genetic node smoothing of triangle and quad surface meshes on a smooth cubic surface
+/// rebuilt from the mesh itself (Chen, Hsu, Lin, sections 2.2 and 3), and the paper's
+/// gradient-based baseline. See doc/mga_smooth.md.
+
+#include <CGAL/Mesh_repair/internal/mga/node_smoothing.h>
+#include <CGAL/Mesh_repair/parameters.h>
+#include <CGAL/Mesh_repair/visitor.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Dynamic_property_map.h>
+
+#include <algorithm>
+#include <vector>
+
+namespace CGAL {
+namespace Mesh_repair {
+
+/// What `mga_smooth` and `conjugate_gradient_smooth` did. Quality is alpha (eq. 4) for
+/// triangles and beta (eq. 7) for quads, over all triangles and quads of the mesh.
+struct Mga_smooth_result {
+  std::size_t free_nodes = 0;
+  std::size_t border_nodes = 0;   ///< fixed: on a border
+  std::size_t feature_nodes = 0;  ///< fixed: on a feature edge (dihedral angle)
+  std::size_t constrained_nodes =
+      0;                           ///< fixed by `vertex_is_constrained_map` or a face of degree > 4
+  std::size_t moves = 0;           ///< accepted node moves over all sweeps
+  std::size_t rejected_folds = 0;  ///< best moves refused by the exact fold test
+  int sweeps = 0;
+  bool converged = false;  ///< the last sweep moved no node
+  bool cancelled = false;  ///< the visitor asked to stop; the mesh is valid
+  double worst_quality_before = 0, mean_quality_before = 0;
+  double worst_quality_after = 0, mean_quality_after = 0;
+};
+
+namespace internal {
+
+inline std::pair<double, double> worst_and_mean_quality(const Polygon_arrays& mesh) {
+  double worst = 1, sum = 0;
+  std::size_t count = 0;
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    const int degree = mesh.degree(int(f));
+    Vec3 corners[4];
+    for (int i = 0; i < degree; ++i) corners[i] = mesh.points[mesh.faces[f][i]];
+    const double q = element_quality(corners, degree);
+    worst = std::min(worst, q);
+    sum += q;
+    ++count;
+  }
+  return count ? std::make_pair(worst, sum / double(count)) : std::make_pair(0.0, 0.0);
+}
+
+// Splits faces into the primary triangles of the cubic surface: quads along their shorter
+// diagonal, larger faces as fans.
+inline std::vector<std::array<int, 3>> primary_triangles(const Polygon_arrays& mesh,
+                                                         const std::vector<std::vector<int>>& big) {
+  std::vector<std::array<int, 3>> triangles;
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    const auto& q = mesh.faces[f];
+    if (mesh.degree(int(f)) == 3) {
+      triangles.push_back({q[0], q[1], q[2]});
+    } else if (length(mesh.points[q[0]] - mesh.points[q[2]]) <=
+               length(mesh.points[q[1]] - mesh.points[q[3]])) {
+      triangles.push_back({q[0], q[1], q[2]});
+      triangles.push_back({q[0], q[2], q[3]});
+    } else {
+      triangles.push_back({q[0], q[1], q[3]});
+      triangles.push_back({q[1], q[2], q[3]});
+    }
+  }
+  for (const auto& polygon : big)
+    for (std::size_t i = 1; i + 1 < polygon.size(); ++i)
+      triangles.push_back({polygon[0], polygon[i], polygon[i + 1]});
+  return triangles;
+}
+
+template <class PolygonMesh, class NamedParameters>
+Mga_smooth_result smooth_with(PolygonMesh& pm, const NamedParameters& np,
+                              Node_optimizer optimizer) {
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using GT = typename GetGeomTraits<PolygonMesh, NamedParameters>::type;
+  using vertex_descriptor = typename boost::graph_traits<PolygonMesh>::vertex_descriptor;
+  using Point = typename GT::Point_3;
+
+  const GT traits = choose_parameter<GT>(get_parameter(np, CGAL::internal_np::geom_traits));
+  auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                              get_property_map(CGAL::vertex_point, pm));
+  using Constrained_default = CGAL::Static_boolean_property_map<vertex_descriptor, false>;
+  auto constrained = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_is_constrained),
+                                      Constrained_default());
+  Default_visitor default_visitor;
+  auto&& visitor = choose_parameter(
+      CGAL::parameters::get_parameter_reference(np, CGAL::internal_np::visitor), default_visitor);
+
+  Node_smoothing_settings settings;
+  settings.optimizer = optimizer;
+  settings.seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0u);
+  settings.max_sweeps =
+      int(choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 3));
+  settings.threads =
+      int(choose_parameter(get_parameter(np, internal_np::number_of_threads_t()), 1));
+  settings.ga.population_size =
+      int(choose_parameter(get_parameter(np, internal_np::population_size_t()), 5));
+  settings.ga.max_generations =
+      int(choose_parameter(get_parameter(np, internal_np::max_generations_t()), 3));
+  const double feature_angle_deg =
+      choose_parameter(get_parameter(np, internal_np::feature_angle_deg_t()), 120.0);
+
+  // Index arrays of the mesh.
+  visitor.start_step("cubic surface");
+  auto index = CGAL::get_initialized_vertex_index_map(pm);
+  std::vector<vertex_descriptor> vertex_of(num_vertices(pm));
+  Polygon_arrays mesh;
+  mesh.points.resize(num_vertices(pm));
+  for (vertex_descriptor v : vertices(pm)) {
+    const std::size_t i = get(index, v);
+    vertex_of[i] = v;
+    const Point& p = get(vpm, v);
+    mesh.points[i] = Vec3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  }
+  std::vector<bool> fixed(mesh.points.size(), false);
+  std::vector<std::vector<int>> big_faces;
+  Mga_smooth_result result;
+  for (auto f : faces(pm)) {
+    std::vector<int> polygon;
+    for (vertex_descriptor v : vertices_around_face(halfedge(f, pm), pm))
+      polygon.push_back(int(get(index, v)));
+    if (polygon.size() == 3 || polygon.size() == 4) {
+      mesh.faces.push_back(
+          {polygon[0], polygon[1], polygon[2], polygon.size() == 4 ? polygon[3] : -1});
+    } else {
+      for (int v : polygon) fixed[v] = true;
+      big_faces.push_back(polygon);
+    }
+  }
+  mesh.build_incidence();
+  const Cubic_surface surface(mesh.points, primary_triangles(mesh, big_faces), feature_angle_deg);
+  for (std::size_t v = 0; v < mesh.points.size(); ++v) {
+    if (mesh.incidence_start[v] == mesh.incidence_start[v + 1]) {
+      fixed[v] = true;  // isolated vertex: nothing to smooth
+    } else if (surface.is_border_vertex(int(v))) {
+      fixed[v] = true, ++result.border_nodes;
+    } else if (surface.is_feature_vertex(int(v))) {
+      fixed[v] = true, ++result.feature_nodes;
+    } else if (fixed[v] || get(constrained, vertex_of[v])) {
+      fixed[v] = true, ++result.constrained_nodes;
+    } else {
+      ++result.free_nodes;
+    }
+  }
+  visitor.end_step("cubic surface");
+
+  std::tie(result.worst_quality_before, result.mean_quality_before) = worst_and_mean_quality(mesh);
+  visitor.start_step(optimizer == Node_optimizer::micro_ga ? "micro-GA smoothing"
+                                                           : "conjugate-gradient smoothing");
+  Node_smoother<GT> smoother(mesh, surface, fixed, settings, traits);
+  const Node_smoothing_statistics statistics =
+      smoother.run([&](double fraction) { return bool(visitor.progress(fraction)); });
+  visitor.end_step(optimizer == Node_optimizer::micro_ga ? "micro-GA smoothing"
+                                                         : "conjugate-gradient smoothing");
+  for (std::size_t v = 0; v < mesh.points.size(); ++v)
+    if (!fixed[v])
+      put(vpm, vertex_of[v], Point(mesh.points[v][0], mesh.points[v][1], mesh.points[v][2]));
+
+  std::tie(result.worst_quality_after, result.mean_quality_after) = worst_and_mean_quality(mesh);
+  result.moves = statistics.moves;
+  result.rejected_folds = statistics.rejected_folds;
+  result.sweeps = statistics.sweeps;
+  result.converged = statistics.converged;
+  result.cancelled = statistics.cancelled;
+  return result;
+}
+
+}  // namespace internal
+
+/// Smooths the free nodes of a triangle, quad or mixed surface mesh with the micro-genetic
+/// algorithm of Chen, Hsu, Lin (section 3): for each free node and each adjacent element, a
+/// micro-GA over the design variables (r1, r2) of eq. 1-3 maximises the sum of alpha (eq. 4-5,
+/// triangles) and beta (eq. 7-8, quads) of the node's elements, each trial position being mapped
+/// onto a cubic surface rebuilt from the input mesh (section 2.2); the best position over the
+/// elements is taken if it raises the fitness and folds no element (exact orientation test).
+/// Trial positions that would lower the node's worst element below min(its current quality, 0.5)
+/// are infeasible, so the worst quality is protected (the paper's sum alone lets it drop).
+/// A move must raise the node's fitness by at least 1e-3; a node is searched again only after it
+/// or a node of its elements moved; sweeps repeat until no node moves. Border nodes, nodes on
+/// feature edges and constrained nodes never move; the connectivity never changes.
+/// Reproducible for a seed, and identical for any number of threads.
+///
+/// \tparam PolygonMesh a model of `FaceListGraph` (faces of degree 3 or 4; the vertices of larger
+///         faces are kept fixed)
+/// \param pm the mesh, smoothed in place
+/// \param np optional named parameters:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{random_seed} \cgalParamDescription{seed of the micro-GA}
+///     \cgalParamType{unsigned int} \cgalParamDefault{0} \cgalParamNEnd
+///   \cgalParamNBegin{number_of_iterations} \cgalParamDescription{maximum number of sweeps}
+///     \cgalParamType{unsigned int} \cgalParamDefault{3} \cgalParamNEnd
+///   \cgalParamNBegin{population_size} \cgalParamDescription{micro-GA population (paper: 5)}
+///     \cgalParamType{int} \cgalParamDefault{5} \cgalParamNEnd
+///   \cgalParamNBegin{max_generations} \cgalParamDescription{generations per element and sweep,
+///     restarts included} \cgalParamType{int} \cgalParamDefault{3} \cgalParamNEnd
+///   \cgalParamNBegin{feature_angle_deg} \cgalParamDescription{an edge whose dihedral angle is
+///     below this is a feature edge; its nodes are fixed} \cgalParamType{double}
+///     \cgalParamDefault{120} \cgalParamNEnd
+///   \cgalParamNBegin{vertex_is_constrained_map} \cgalParamDescription{nodes that must not move}
+///     \cgalParamType{readable vertex property map to bool} \cgalParamDefault{none} \cgalParamNEnd
+///   \cgalParamNBegin{number_of_threads} \cgalParamDescription{threads (TBB) over independent
+///     node sets} \cgalParamType{int} \cgalParamDefault{1} \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map} \cgalParamDefault{`get(CGAL::vertex_point, pm)`}
+///   \cgalParamNEnd \cgalParamNBegin{geom_traits} \cgalParamDescription{provides `Point_3` and the
+///   exact
+///     `Orientation_3`} \cgalParamDefault{from the point type} \cgalParamNEnd
+///   \cgalParamNBegin{visitor} \cgalParamDescription{progress and cancellation (visitor.h)}
+///     \cgalParamDefault{`Default_visitor`} \cgalParamNEnd
+/// \cgalNamedParamsEnd
+template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
+Mga_smooth_result mga_smooth(PolygonMesh& pm,
+                             const NamedParameters& np = parameters::default_values()) {
+  return internal::smooth_with(pm, np, internal::Node_optimizer::micro_ga);
+}
+
+/// The paper's baseline (Table 2, after Garimella et al.): the same sweeps, fitness, surface
+/// mapping, fixed nodes and fold test as `mga_smooth`, but each node follows a Polak-Ribiere
+/// conjugate-gradient search over its tangent plane (central-difference gradient, backtracking
+/// line search). Deterministic. Same named parameters as `mga_smooth`; `max_generations` bounds
+/// the CG iterations per node and sweep (default 3); `random_seed` and `population_size` are
+/// unused.
+template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
+Mga_smooth_result conjugate_gradient_smooth(
+    PolygonMesh& pm, const NamedParameters& np = parameters::default_values()) {
+  return internal::smooth_with(pm, np, internal::Node_optimizer::conjugate_gradient);
+}
+
+}  // namespace Mesh_repair
+}  // namespace CGAL
+
+#endif  // CGAL_MESH_REPAIR_MGA_SMOOTH_H

@@ -1,0 +1,89 @@
+#!/usr/bin/env bash
+# Regenerates the "Hole filling fidelity" section of doc/benchmarks.md and its plots in
+# doc/images/ with `mesh_repair bench holes` (doc/bench_holes.md).
+# Usage: scripts/bench_holes.sh [--quick]
+#   MESH_REPAIR=path/to/mesh_repair  (default: build/bin/mesh_repair, built if missing)
+#   BENCH_METHODS=a,b,...            (default: all)
+# --quick: sphere and torus only, one seed (a smoke run; doc/ is not touched).
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+tool=${MESH_REPAIR:-$root/build/bin/mesh_repair}
+if [[ ! -x "$tool" ]]; then
+  "$root/scripts/build.sh" --target mesh_repair
+fi
+meshes_dir=$root/.cache/cgal-demo/meshes
+[[ -f "$meshes_dir/elephant.off" ]] || "$root/scripts/fetch_demo_data.sh"
+
+methods=${BENCH_METHODS:-all}
+out=$root/bench-out/holes
+args=(holes --analytic sphere --analytic torus --holes 3 --radius 0.05,0.12 --seeds 1,2,3
+      --methods "$methods" --out "$out")
+quick=0
+if [[ "${1:-}" == "--quick" ]]; then
+  quick=1
+  args=(holes --analytic sphere --analytic torus --holes 2 --radius 0.05,0.12 --seeds 1
+        --methods "$methods" --out "$out")
+else
+  for name in elephant bunny00 head femur fandisk; do
+    if [[ -f "$meshes_dir/$name.off" ]]; then
+      args+=(--mesh "$meshes_dir/$name.off")
+    else
+      echo "bench_holes: $name.off not found in $meshes_dir; skipped" >&2
+    fi
+  done
+fi
+
+start=$(date +%s)
+"$tool" bench "${args[@]}"
+seconds=$(($(date +%s) - start))
+((quick)) && exit 0
+
+# Plots: a few small ones are kept in doc/images.
+mkdir -p "$root/doc/images"
+for plot in bar_einf_rel bar_e2_rel bar_hausdorff_rel bar_normal_deviation_max_deg bar_min_alpha \
+            bar_seconds error_vs_size error_vs_radius; do
+  [[ -f "$out/$plot.png" ]] && cp "$out/$plot.png" "$root/doc/images/bench_holes_$plot.png"
+done
+
+# Replace only our own section of doc/benchmarks.md (from its heading to the next "## ").
+section=$(mktemp)
+command_line="mesh_repair bench ${args[*]}"
+command_line=${command_line//$root\//}
+{
+  echo "## Hole filling fidelity (mesh_repair bench holes)"
+  echo
+  echo "Regenerate with \`scripts/bench_holes.sh\` ($seconds s wall-clock on the shared 2-core"
+  echo "machine). Command (paths relative to the repository):"
+  echo
+  echo '```'
+  echo "$command_line"
+  echo '```'
+  echo
+  echo "Definitions of every measure: [bench_holes.md](bench_holes.md). Distances are divided by"
+  echo "the bounding-box diagonal; on sphere and torus the E norms use the exact surface."
+  echo
+  sed -n '/^| method |/,$p' "$out/table.md"
+  echo
+  for plot in bar_einf_rel bar_normal_deviation_max_deg bar_min_alpha bar_seconds error_vs_size \
+              error_vs_radius; do
+    [[ -f "$root/doc/images/bench_holes_$plot.png" ]] &&
+      echo "![$plot](images/bench_holes_$plot.png)"
+  done
+  echo
+} >"$section"
+/usr/bin/env python3 - "$root/doc/benchmarks.md" "$section" <<'EOF'
+import sys
+doc_path, section_path = sys.argv[1], sys.argv[2]
+heading = "## Hole filling fidelity (mesh_repair bench holes)"
+doc = open(doc_path).read()
+section = open(section_path).read()
+if heading in doc:
+    start = doc.index(heading)
+    end = doc.find("\n## ", start + len(heading))
+    doc = doc[:start] + section.rstrip("\n") + "\n" + (doc[end:] if end >= 0 else "")
+else:
+    doc = doc.rstrip("\n") + "\n\n" + section
+open(doc_path, "w").write(doc)
+EOF
+rm -f "$section"
+echo "bench_holes: doc/benchmarks.md and doc/images/bench_holes_*.png updated ($seconds s)"

@@ -1,0 +1,118 @@
+// automatic_repair: the whole pipeline on synthetic defective meshes and real ones.
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Mesh_repair/automatic_repair.h>
+#include <CGAL/Mesh_repair/generators.h>
+#include <CGAL/Mesh_repair/io.h>
+#include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Surface_mesh.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <random>
+
+namespace {
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Mesh = CGAL::Surface_mesh<Point>;
+namespace MR = CGAL::Mesh_repair;
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+// Removes the faces whose centroid lies within `radius` of `center` (a disc-shaped hole).
+void punch_hole(Mesh& mesh, const Point& center, double radius) {
+  std::vector<Mesh::Face_index> doomed;
+  for (auto f : mesh.faces()) {
+    double c[3] = {0, 0, 0};
+    for (auto v : vertices_around_face(mesh.halfedge(f), mesh))
+      for (int k = 0; k < 3; ++k) c[k] += mesh.point(v)[k] / 3;
+    const double d = std::sqrt(CGAL::square(c[0] - center.x()) + CGAL::square(c[1] - center.y()) +
+                               CGAL::square(c[2] - center.z()));
+    if (d < radius) doomed.push_back(f);
+  }
+  for (auto f : doomed) CGAL::Euler::remove_face(mesh.halfedge(f), mesh);
+  mesh.collect_garbage();
+}
+
+std::size_t border_cycle_count(const Mesh& mesh) {
+  std::vector<Mesh::Halfedge_index> cycles;
+  PMP::extract_boundary_cycles(mesh, std::back_inserter(cycles));
+  return cycles.size();
+}
+
+Mesh sphere_with_holes() {
+  Mesh sphere;
+  MR::make_sphere(sphere, Point(0, 0, 0), 1.0, 4);
+  punch_hole(sphere, Point(1, 0, 0), 0.3);
+  punch_hole(sphere, Point(-1, 0, 0), 0.25);
+  punch_hole(sphere, Point(0, 0, 1), 0.35);
+  return sphere;
+}
+
+TEST(AutomaticRepair, SphereWithThreeHolesBecomesClosedAndValid) {
+  Mesh mesh = sphere_with_holes();
+  ASSERT_EQ(border_cycle_count(mesh), 3u);
+  const auto result = MR::automatic_repair(mesh);
+  EXPECT_TRUE(result.complete()) << (result.remaining.empty() ? "" : result.remaining.front());
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  EXPECT_TRUE(CGAL::is_closed(mesh));
+  EXPECT_EQ(result.holes.filled, 3u);
+  EXPECT_EQ(result.self_intersections_output, 0u);
+  // The patches follow the sphere: every vertex within 5% of the radius.
+  for (auto v : mesh.vertices()) {
+    const Point& p = mesh.point(v);
+    EXPECT_NEAR(std::sqrt(CGAL::squared_distance(p, Point(0, 0, 0))), 1.0, 0.05);
+  }
+}
+
+TEST(AutomaticRepair, HolesOverTheSizeLimitAreLeftOpenAndListed) {
+  Mesh mesh = sphere_with_holes();
+  const auto result = MR::automatic_repair(mesh, MR::parameters::max_hole_size(0.2));
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  EXPECT_GT(result.holes_too_large, 0u);
+  EXPECT_FALSE(result.complete());
+  EXPECT_EQ(border_cycle_count(mesh), result.holes_too_large);
+}
+
+TEST(AutomaticRepair, KeepsEveryComponentUnlessAskedAndCountsRemovals) {
+  Mesh mesh;
+  MR::make_sphere(mesh, Point(0, 0, 0), 1.0, 2);
+  MR::make_sphere(mesh, Point(5, 0, 0), 0.5, 1);
+  Mesh kept = mesh;
+  MR::automatic_repair(kept);
+  EXPECT_EQ(PMP::connected_components(kept, kept.add_property_map<Mesh::Face_index, std::size_t>("f:cc").first), 2u);
+  const auto result = MR::automatic_repair(mesh, MR::parameters::keep_largest_component(true));
+  EXPECT_EQ(result.components_removed, 1u);
+  EXPECT_EQ(result.faces_removed_with_components, 80u);
+  EXPECT_EQ(mesh.number_of_faces(), 320u);
+}
+
+TEST(AutomaticRepair, BundledDefectivePartBecomesClosedAndValid) {
+  const std::string path = std::string(MESH_REPAIR_SOURCE_DIR) + "/data/demo/defective_part.off";
+  Mesh mesh;
+  MR::Soup_repair_report soup;
+  ASSERT_EQ(MR::read_mesh(path, mesh, soup), "");
+  EXPECT_GT(soup.points_merged, 0u);
+  EXPECT_EQ(soup.duplicated_polygons_removed, 1u);
+  const auto result = MR::automatic_repair(mesh);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  // The detached zero-area triangle is removed as degenerate; the block is closed.
+  EXPECT_TRUE(CGAL::is_closed(mesh)) << border_cycle_count(mesh) << " border cycles left";
+  EXPECT_TRUE(result.complete()) << (result.remaining.empty() ? "" : result.remaining.front());
+}
+
+TEST(AutomaticRepair, RealScansWithHolesBecomeClosed) {
+  for (const char* name : {"elephant-with-holes.off", "mech-holes-shark.off"}) {
+    const std::string path = std::string(MESH_REPAIR_DEMO_DATA_DIR) + "/" + name;
+    if (!std::filesystem::exists(path)) GTEST_SKIP() << "libcgal-demo meshes absent (" << path << ")";
+    Mesh mesh;
+    MR::Soup_repair_report soup;
+    ASSERT_EQ(MR::read_mesh(path, mesh, soup), "") << name;
+    const auto result = MR::automatic_repair(mesh);
+    EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh)) << name;
+    EXPECT_TRUE(CGAL::is_closed(mesh)) << name;
+    EXPECT_EQ(result.holes.failed, 0u) << name;
+  }
+}
+
+}  // namespace

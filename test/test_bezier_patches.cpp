@@ -1,0 +1,119 @@
+// Copyright (c) 2026 Mesh_repair developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Quartic triangular Bezier patches of Walton and Meek (thesis 5.5).
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Mesh_repair/internal/shape_prediction/bezier_patches.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = K::Point_3;
+using Vector = K::Vector_3;
+using Patch = CGAL::Mesh_repair::internal::shape_prediction::Quartic_triangle_patch<K>;
+
+Vector unit(const Vector& v) {
+  return v / std::sqrt(v.squared_length());
+}
+
+Point on_sphere(double theta, double phi) {
+  return Point(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+}
+
+Patch sphere_patch(const Point& a, const Point& b, const Point& c) {
+  return Patch({a, b, c}, {a - CGAL::ORIGIN, b - CGAL::ORIGIN, c - CGAL::ORIGIN});
+}
+
+// Unit normal of a patch at (u, v, 0), from one-sided differences along the edge w = 0 and
+// into the patch.
+Vector normal_on_edge(const Patch& patch, double u) {
+  const double h = 1e-6;
+  const Point p = patch(u, 1 - u, 0);
+  const Vector along = patch(u + h, 1 - u - h, 0) - p;
+  const Vector inward = patch(u - h / 2, 1 - u - h / 2, h) - p;
+  return unit(CGAL::cross_product(along, inward));
+}
+
+TEST(BezierPatches, PatchInterpolatesItsCornersAndReproducesAPlaneExactly) {
+  const Vector n = unit(Vector(0.3, 0.2, -1));
+  auto plane_point = [](double x, double y) { return Point(x, y, 0.3 * x + 0.2 * y + 1); };
+  const Point a = plane_point(0, 0), b = plane_point(2, 0.2), c = plane_point(0.7, 1.5);
+  const Patch tilted({a, b, c}, {n, n, n});
+  EXPECT_LT(std::sqrt(CGAL::squared_distance(tilted(1, 0, 0), a)), 1e-14);
+  EXPECT_LT(std::sqrt(CGAL::squared_distance(tilted(0, 1, 0), b)), 1e-14);
+  EXPECT_LT(std::sqrt(CGAL::squared_distance(tilted(0, 0, 1), c)), 1e-14);
+  const K::Plane_3 plane(a, b, c);
+  for (double u = 0; u <= 1.0; u += 0.1)
+    for (double v = 0; u + v <= 1.0; v += 0.1) {
+      const Point p = tilted(u, v, 1 - u - v);
+      EXPECT_LT(std::sqrt(CGAL::squared_distance(p, plane)), 1e-13);
+    }
+  // In the plane z = 0 every construction stays exactly in the plane.
+  const Vector z(0, 0, 1);
+  const Patch flat({Point(0, 0, 0), Point(1, 0, 0), Point(0.2, 0.9, 0)}, {z, z, z});
+  for (double u = 0; u <= 1.0; u += 0.125)
+    for (double v = 0; u + v <= 1.0; v += 0.125) EXPECT_EQ(flat(u, v, 1 - u - v).z(), 0.0);
+}
+
+TEST(BezierPatches, NeighbouringPatchesShareTheirEdgeAndTangentPlane) {
+  // Triangles (a, b, c) and (b, a, d) on the unit sphere share the edge a-b (w = 0 in both).
+  const Point a = on_sphere(0.9, 0.0), b = on_sphere(1.1, 0.8), c = on_sphere(0.4, 0.5),
+              d = on_sphere(1.5, 0.2);
+  const Patch first = sphere_patch(a, b, c);
+  const Patch second = sphere_patch(b, a, d);
+  double worst_gap = 0, worst_sine = 0;
+  for (double u = 0.05; u < 1.0; u += 0.05) {
+    worst_gap = std::max(
+        worst_gap, std::sqrt(CGAL::squared_distance(first(u, 1 - u, 0), second(1 - u, u, 0))));
+    const Vector n1 = normal_on_edge(first, u);
+    const Vector n2 = normal_on_edge(second, 1 - u);
+    worst_sine = std::max(worst_sine, std::sqrt(CGAL::cross_product(n1, n2).squared_length()));
+  }
+  EXPECT_LT(worst_gap, 1e-12);
+  EXPECT_LT(worst_sine, 1e-4);  // G1: finite differences of step 1e-6
+}
+
+TEST(BezierPatches, NormalsAtCornersAreTheGivenNormals) {
+  const Point a = on_sphere(0.9, 0.0), b = on_sphere(1.1, 0.8), c = on_sphere(0.4, 0.5);
+  const Patch patch = sphere_patch(a, b, c);
+  const double h = 1e-6;
+  const Vector du = patch(1 - h, h, 0) - patch(1, 0, 0);
+  const Vector dw = patch(1 - h, 0, h) - patch(1, 0, 0);
+  const Vector n = unit(CGAL::cross_product(du, dw));
+  EXPECT_LT(std::sqrt(CGAL::cross_product(n, a - CGAL::ORIGIN).squared_length()), 1e-4);
+}
+
+TEST(BezierPatches, SpherePatchStaysCloseToTheSphere) {
+  const Point a = on_sphere(0.9, 0.0), b = on_sphere(1.1, 0.8), c = on_sphere(0.4, 0.5);
+  const Patch patch = sphere_patch(a, b, c);
+  double flat_error = 0, patch_error = 0;
+  for (double u = 0; u <= 1.0; u += 0.05)
+    for (double v = 0; u + v <= 1.0; v += 0.05) {
+      const double w = 1 - u - v;
+      const Point p = patch(u, v, w);
+      patch_error =
+          std::max(patch_error, std::abs(std::sqrt((p - CGAL::ORIGIN).squared_length()) - 1));
+      const Vector q = u * (a - CGAL::ORIGIN) + v * (b - CGAL::ORIGIN) + w * (c - CGAL::ORIGIN);
+      flat_error = std::max(flat_error, std::abs(std::sqrt(q.squared_length()) - 1));
+    }
+  EXPECT_LT(patch_error, 0.1 * flat_error);
+}
+
+TEST(BezierPatches, NetworkMapsPointsOntoThePatchOfTheirTriangle) {
+  const std::vector<Point> points = {on_sphere(0.9, 0.0), on_sphere(1.1, 0.8), on_sphere(0.4, 0.5),
+                                     on_sphere(1.5, 0.2)};
+  std::vector<Vector> normals;
+  for (const Point& p : points) normals.push_back(p - CGAL::ORIGIN);
+  const CGAL::Mesh_repair::internal::shape_prediction::Bezier_patch_network<K> network(
+      points, normals, {{0, 1, 2}, {1, 0, 3}});
+  const Point centroid = CGAL::centroid(points[0], points[1], points[2]);
+  const Point mapped = network.map(centroid);
+  EXPECT_LT(std::sqrt(CGAL::squared_distance(mapped, network.patch(0)(1.0 / 3, 1.0 / 3, 1.0 / 3))),
+            1e-12);
+  EXPECT_LT(std::abs(std::sqrt((mapped - CGAL::ORIGIN).squared_length()) - 1), 0.01);
+}
+
+}  // namespace

@@ -1,0 +1,199 @@
+// Pernot's curvature-variation filling (hole_filling/curvature_variation.h).
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Mesh_repair/generators.h>
+#include <CGAL/Mesh_repair/hole_filling/curvature_variation.h>
+#include <CGAL/Mesh_repair/internal/curvature_variation/measures.h>
+#include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Surface_mesh.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+#include <vector>
+
+namespace {
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Mesh = CGAL::Surface_mesh<Point>;
+using halfedge_descriptor = boost::graph_traits<Mesh>::halfedge_descriptor;
+namespace MR = CGAL::Mesh_repair;
+namespace cv = CGAL::Mesh_repair::internal::curvature_variation;
+
+std::size_t border_cycles(const Mesh& mesh) {
+  std::vector<halfedge_descriptor> cycles;
+  CGAL::Polygon_mesh_processing::extract_boundary_cycles(mesh, std::back_inserter(cycles));
+  return cycles.size();
+}
+
+// Largest distance of the patch vertices to the sphere of radius 1 at the origin, over the
+// bounding-box diagonal (Einf of thesis Table 5.3).
+double sphere_einf(const Mesh& mesh, const MR::Fill_patch<Mesh>& patch) {
+  double worst = 0;
+  for (auto v : patch.vertices) {
+    const Point& p = mesh.point(v);
+    worst = std::max(
+        worst,
+        std::abs(std::sqrt(CGAL::to_double(p.x() * p.x() + p.y() * p.y() + p.z() * p.z())) - 1.0));
+  }
+  return worst / (2.0 * std::sqrt(3.0));
+}
+
+Mesh sphere_with_cap_hole(halfedge_descriptor& border) {
+  Mesh mesh;
+  MR::make_sphere(mesh, Point(0, 0, 0), 1.0, 4);
+  border = cv::punch_ball_hole(mesh, Point(0, 0, 1), 0.6);
+  return mesh;
+}
+
+TEST(CurvatureVariation, PlaneHoleStaysPlanarWithForces) {
+  for (auto grid : {MR::Topological_grid::disc, MR::Topological_grid::refined_liepa}) {
+    Mesh mesh;
+    MR::make_height_field<Mesh, Point>(mesh, -1, 1, -1, 1, 20, 20,
+                                       [](double, double) { return 0.0; });
+    const halfedge_descriptor border = cv::punch_ball_hole(mesh, Point(0.05, 0.02, 0), 0.5);
+    ASSERT_EQ(border_cycles(mesh), 2u);
+    MR::Fill_patch<Mesh> patch;
+    const auto report = MR::fill_hole_curvature_variation(
+        mesh, border, patch,
+        MR::parameters::curvature_objective(MR::Curvature_objective::forces)
+            .objective_nodes(MR::Objective_nodes::free_nodes)
+            .topological_grid(grid));
+    ASSERT_TRUE(report.filled) << report.failure;
+    EXPECT_GT(patch.vertices.size(), 10u);
+    EXPECT_EQ(border_cycles(mesh), 1u);
+    EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+    for (auto v : patch.vertices) EXPECT_NEAR(CGAL::to_double(mesh.point(v).z()), 0.0, 1e-10);
+  }
+}
+
+TEST(CurvatureVariation, SphereCapForceVariationHasLowerEinfThanForces) {
+  double einf[2];
+  int k = 0;
+  for (auto objective :
+       {MR::Curvature_objective::forces, MR::Curvature_objective::force_variation}) {
+    halfedge_descriptor border;
+    Mesh mesh = sphere_with_cap_hole(border);
+    ASSERT_EQ(border_cycles(mesh), 1u);
+    MR::Fill_patch<Mesh> patch;
+    const auto report = MR::fill_hole_curvature_variation(
+        mesh, border, patch,
+        MR::parameters::curvature_objective(objective).objective_nodes(
+            MR::Objective_nodes::free_and_contour_nodes));
+    ASSERT_TRUE(report.filled) << report.failure;
+    EXPECT_TRUE(CGAL::is_closed(mesh));
+    einf[k++] = sphere_einf(mesh, patch);
+  }
+  EXPECT_LT(einf[1], 0.5 * einf[0]);
+  EXPECT_LT(einf[1], 0.01);
+}
+
+TEST(CurvatureVariation, DiscGridClosesSphereCapWithinOnePercent) {
+  halfedge_descriptor border;
+  Mesh mesh = sphere_with_cap_hole(border);
+  MR::Fill_patch<Mesh> patch;
+  const auto report = MR::fill_hole_curvature_variation(
+      mesh, border, patch, MR::parameters::topological_grid(MR::Topological_grid::disc));
+  ASSERT_TRUE(report.filled) << report.failure;
+  EXPECT_TRUE(CGAL::is_closed(mesh));
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  EXPECT_LT(sphere_einf(mesh, patch), 0.01);
+}
+
+TEST(CurvatureVariation, TwoDisjointHolesSolvedTogetherEqualSolvedSeparately) {
+  auto make = [](std::vector<halfedge_descriptor>& borders) {
+    Mesh mesh;
+    MR::make_sphere(mesh, Point(0, 0, 0), 1.0, 4);
+    borders.push_back(cv::punch_ball_hole(mesh, Point(0, 0, 1), 0.5));
+    borders.push_back(cv::punch_ball_hole(mesh, Point(0, 0, -1), 0.5));
+    return mesh;
+  };
+  std::vector<halfedge_descriptor> borders;
+  Mesh together = make(borders);
+  ASSERT_EQ(border_cycles(together), 2u);
+  std::vector<MR::Fill_patch<Mesh>> patches_together;
+  MR::Curvature_deformation_report deformation;
+  const auto result = MR::fill_holes_curvature_variation(
+      together, borders, patches_together, MR::parameters::deformation_report(&deformation));
+  ASSERT_EQ(result.filled, 2u);
+  EXPECT_EQ(deformation.factorizations, 1u);
+  for (std::size_t hole = 0; hole < 2; ++hole) {
+    std::vector<halfedge_descriptor> separate_borders;
+    Mesh separate = make(separate_borders);
+    std::vector<MR::Fill_patch<Mesh>> patches;
+    ASSERT_EQ(
+        MR::fill_holes_curvature_variation(separate, {separate_borders[hole]}, patches).filled, 1u);
+    const auto& a = patches_together[hole].vertices;
+    const auto& b = patches.front().vertices;
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t i = 0; i < a.size(); ++i)
+      EXPECT_LT(std::sqrt(CGAL::to_double(
+                    CGAL::squared_distance(together.point(a[i]), separate.point(b[i])))),
+                1e-9);
+  }
+}
+
+TEST(CurvatureVariation, PointConstraintIsMetByTheInnerMesh) {
+  halfedge_descriptor border;
+  Mesh mesh = sphere_with_cap_hole(border);
+  MR::Fill_constraints<Point> constraints;
+  constraints.points.push_back(Point(0.05, -0.03, 1.15));  // pull the cap 15% outwards
+  MR::Fill_patch<Mesh> patch;
+  MR::Curvature_deformation_report deformation;
+  const auto report = MR::fill_hole_curvature_variation(
+      mesh, border, patch,
+      MR::parameters::fill_constraints(constraints).deformation_report(&deformation));
+  ASSERT_TRUE(report.filled) << report.failure;
+  EXPECT_EQ(deformation.constraints_applied, 1u);
+  EXPECT_LT(deformation.max_constraint_residual, 1e-9);
+  double highest = 0;
+  for (auto v : patch.vertices) highest = std::max(highest, CGAL::to_double(mesh.point(v).z()));
+  EXPECT_GT(highest, 1.1);
+}
+
+TEST(CurvatureVariation, ConstraintPolylineIsFollowed) {
+  halfedge_descriptor border;
+  Mesh mesh = sphere_with_cap_hole(border);
+  MR::Fill_constraints<Point> constraints;
+  constraints.polylines.push_back({Point(-0.3, 0, 1.05), Point(0, 0, 1.1), Point(0.3, 0, 1.05)});
+  MR::Fill_patch<Mesh> patch;
+  MR::Curvature_deformation_report deformation;
+  const auto report = MR::fill_hole_curvature_variation(
+      mesh, border, patch,
+      MR::parameters::fill_constraints(constraints).deformation_report(&deformation));
+  ASSERT_TRUE(report.filled) << report.failure;
+  EXPECT_GE(deformation.constraints_applied, 3u);
+  EXPECT_LT(deformation.max_constraint_residual, 1e-6);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+}
+
+TEST(CurvatureVariation, ConstraintFileFormatIsReadAndErrorsNameTheLine) {
+  std::istringstream good(
+      "# pull the patch\npoint 0 0 1.1\n\npolyline 0 0 1 1 0 1 2 0 1\nspacing 0.1\n");
+  MR::Fill_constraints<Point> constraints;
+  EXPECT_EQ(MR::read_fill_constraints(good, constraints), "");
+  EXPECT_EQ(constraints.points.size(), 1u);
+  ASSERT_EQ(constraints.polylines.size(), 1u);
+  EXPECT_EQ(constraints.polylines.front().size(), 3u);
+  EXPECT_DOUBLE_EQ(constraints.polyline_spacing, 0.1);
+  std::istringstream bad("point 0 0 1\npolyline 0 0 1 2\n");
+  MR::Fill_constraints<Point> ignored;
+  EXPECT_EQ(MR::read_fill_constraints(bad, ignored).rfind("line 2:", 0), 0u);
+}
+
+TEST(CurvatureVariation, ConstraintOnTheContourOnlyIsDroppedAndReported) {
+  halfedge_descriptor border;
+  Mesh mesh = sphere_with_cap_hole(border);
+  const Point on_contour = mesh.point(target(border, mesh));
+  MR::Fill_constraints<Point> constraints;
+  constraints.points.push_back(on_contour);
+  MR::Fill_patch<Mesh> patch;
+  MR::Curvature_deformation_report deformation;
+  ASSERT_TRUE(MR::fill_hole_curvature_variation(
+                  mesh, border, patch,
+                  MR::parameters::fill_constraints(constraints).deformation_report(&deformation))
+                  .filled);
+  EXPECT_EQ(deformation.constraints_dropped, 1u);
+  EXPECT_EQ(deformation.constraints_applied, 0u);
+}
+
+}  // namespace

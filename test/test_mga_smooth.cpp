@@ -1,0 +1,238 @@
+// Copyright (c) 2026 Mesh_repair developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <CGAL/Mesh_repair/generators.h>
+#include <CGAL/Mesh_repair/internal/c1_surface/clough_tocher.h>
+#include <CGAL/Mesh_repair/mga_smooth.h>
+#include <CGAL/Mesh_repair/triangles_to_quads.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Random.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Mesh = CGAL::Surface_mesh<Point>;
+namespace MR = CGAL::Mesh_repair;
+
+double mean_alpha(const Mesh& mesh) {
+  return MR::quality_statistics(mesh).mean_alpha;
+}
+
+// A planar grid whose interior nodes are displaced in the plane by up to 35% of a cell.
+Mesh jittered_plane(int n, unsigned seed) {
+  Mesh mesh;
+  MR::make_height_field<Mesh, Point>(mesh, 0, 1, 0, 1, n, n, [](double, double) { return 0.0; });
+  CGAL::Random random(seed);
+  const double cell = 1.0 / n;
+  for (auto v : vertices(mesh)) {
+    if (is_border(v, mesh)) continue;
+    const Point& p = mesh.point(v);
+    mesh.point(v) = Point(p.x() + random.get_double(-0.35, 0.35) * cell,
+                          p.y() + random.get_double(-0.35, 0.35) * cell, 0);
+  }
+  return mesh;
+}
+
+// An icosphere whose vertices are moved tangentially, then put back on the sphere.
+Mesh jittered_sphere(double radius, unsigned seed) {
+  Mesh mesh;
+  MR::make_sphere(mesh, Point(0, 0, 0), radius, 3);
+  CGAL::Random random(seed);
+  for (auto v : vertices(mesh)) {
+    const Point& p = mesh.point(v);
+    const double dx = random.get_double(-0.04, 0.04) * radius;
+    const double dy = random.get_double(-0.04, 0.04) * radius;
+    const double dz = random.get_double(-0.04, 0.04) * radius;
+    const Point q(p.x() + dx, p.y() + dy, p.z() + dz);
+    const double scale = radius / std::sqrt(CGAL::to_double((q - CGAL::ORIGIN).squared_length()));
+    mesh.point(v) = Point(q.x() * scale, q.y() * scale, q.z() * scale);
+  }
+  return mesh;
+}
+
+TEST(MgaSmooth, PlaneMeshStaysInThePlaneAndImproves) {
+  Mesh mesh = jittered_plane(12, 7);
+  const double before = mean_alpha(mesh);
+  const auto result = MR::mga_smooth(mesh, CGAL::parameters::random_seed(3));
+  EXPECT_GT(result.moves, 0u);
+  for (auto v : vertices(mesh)) EXPECT_EQ(mesh.point(v).z(), 0.0);
+  EXPECT_GT(mean_alpha(mesh), before + 0.01);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+}
+
+TEST(MgaSmooth, SphereMeshStaysWithinOneThousandthOfTheRadius) {
+  const double radius = 2.0;
+  Mesh mesh = jittered_sphere(radius, 11);
+  const double before = mean_alpha(mesh);
+  MR::mga_smooth(mesh, CGAL::parameters::random_seed(5));
+  for (auto v : vertices(mesh)) {
+    const double distance =
+        std::sqrt(CGAL::to_double((mesh.point(v) - CGAL::ORIGIN).squared_length()));
+    EXPECT_LT(std::abs(distance - radius), 1e-3 * radius);
+  }
+  EXPECT_GT(mean_alpha(mesh), before);
+}
+
+TEST(MgaSmooth, MeanAlphaNeverDecreasesSweepAfterSweep) {
+  Mesh mesh = jittered_sphere(1.0, 23);
+  double previous = mean_alpha(mesh);
+  for (int sweep = 0; sweep < 4; ++sweep) {
+    const auto result =
+        MR::mga_smooth(mesh, CGAL::parameters::random_seed(sweep).number_of_iterations(1));
+    EXPECT_GE(result.mean_quality_after, result.mean_quality_before);
+    const double now = mean_alpha(mesh);
+    EXPECT_GE(now, previous - 1e-12);
+    previous = now;
+  }
+}
+
+TEST(MgaSmooth, FixedBorderFeatureAndConstrainedNodesNeverMove) {
+  Mesh mesh;
+  MR::make_subdivided_cube<Mesh, Point>(mesh, 1.0, 6);
+  CGAL::Random random(5);
+  for (auto v : vertices(mesh)) {  // jitter inside each cube face, keeping it planar
+    Point p = mesh.point(v);
+    double c[3] = {p.x(), p.y(), p.z()};
+    for (double& x : c)
+      if (x > 1e-9 && x < 1 - 1e-9) x += random.get_double(-0.04, 0.04);
+    mesh.point(v) = Point(c[0], c[1], c[2]);
+  }
+  auto constrained = mesh.add_property_map<Mesh::Vertex_index, bool>("v:constrained", false).first;
+  const auto pinned = *vertices(mesh).begin();
+  std::vector<Point> before;
+  for (auto v : vertices(mesh)) before.push_back(mesh.point(v));
+  std::size_t interior_pinned = 0;
+  for (auto v : vertices(mesh)) {
+    const Point& p = mesh.point(v);
+    const bool inside = p.x() > 1e-9 && p.x() < 1 - 1e-9 && p.y() > 1e-9 && p.y() < 1 - 1e-9;
+    if (inside && p.z() == 0 && interior_pinned++ == 0) put(constrained, v, true);
+  }
+  put(constrained, pinned, true);
+  const auto result = MR::mga_smooth(mesh, MR::parameters::feature_angle_deg(135.0)
+                                               .vertex_is_constrained_map(constrained)
+                                               .random_seed(1));
+  EXPECT_GT(result.feature_nodes, 0u);
+  EXPECT_GE(result.constrained_nodes, 1u);
+  std::size_t i = 0;
+  for (auto v : vertices(mesh)) {
+    const Point& p = before[i++];
+    auto on = [](double x) { return x == 0 || x == 1; };
+    const int edge_coordinates = on(p.x()) + on(p.y()) + on(p.z());
+    if (edge_coordinates >= 2 || get(constrained, v)) {
+      EXPECT_EQ(mesh.point(v), p);
+    }
+  }
+}
+
+TEST(MgaSmooth, SameSeedGivesSameMeshAndThreadsDoNotChangeIt) {
+  const Mesh input = jittered_sphere(1.0, 99);
+  Mesh serial = input, again = input, parallel = input, other_seed = input;
+  MR::mga_smooth(serial, CGAL::parameters::random_seed(42).number_of_iterations(3));
+  MR::mga_smooth(again, CGAL::parameters::random_seed(42).number_of_iterations(3));
+  MR::mga_smooth(parallel,
+                 MR::parameters::number_of_threads(2).random_seed(42).number_of_iterations(3));
+  MR::mga_smooth(other_seed, CGAL::parameters::random_seed(43).number_of_iterations(3));
+  bool differs = false;
+  for (auto v : vertices(input)) {
+    EXPECT_EQ(serial.point(v), again.point(v));
+    EXPECT_EQ(serial.point(v), parallel.point(v));
+    differs = differs || serial.point(v) != other_seed.point(v);
+  }
+  EXPECT_TRUE(differs);
+}
+
+TEST(ConjugateGradientSmooth, PlaneMeshImprovesWithoutLeavingThePlane) {
+  Mesh mesh = jittered_plane(12, 8);
+  const double before = mean_alpha(mesh);
+  MR::conjugate_gradient_smooth(mesh);
+  for (auto v : vertices(mesh)) EXPECT_EQ(mesh.point(v).z(), 0.0);
+  EXPECT_GT(mean_alpha(mesh), before + 0.01);
+}
+
+TEST(TrianglesToQuads, RegularTriangleGridBecomesAllQuads) {
+  Mesh mesh;
+  MR::make_height_field<Mesh, Point>(mesh, 0, 1, 0, 1, 8, 8, [](double, double) { return 0.0; });
+  const auto result = MR::triangles_to_quads(mesh);
+  EXPECT_EQ(result.remaining_triangles, 0u);
+  EXPECT_EQ(result.quads, 64u);
+  for (auto f : faces(mesh)) EXPECT_EQ(degree(f, mesh), 4u);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+}
+
+TEST(TrianglesToQuads, QuadSmoothingRaisesMeanBetaAndKeepsPlane) {
+  Mesh mesh = jittered_plane(10, 3);
+  MR::triangles_to_quads(mesh);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  const auto result = MR::mga_smooth(mesh, CGAL::parameters::random_seed(2));
+  EXPECT_GT(result.mean_quality_after, result.mean_quality_before);
+  EXPECT_GT(result.worst_quality_after, 0.0);
+  for (auto v : vertices(mesh)) EXPECT_EQ(mesh.point(v).z(), 0.0);
+}
+
+TEST(FlipEdgesForQuality, WorstAlphaOfAJitteredPlaneDoesNotDecrease) {
+  Mesh mesh = jittered_plane(10, 5);
+  const double before = MR::quality_statistics(mesh).min_alpha;
+  const auto result = MR::flip_edges_for_quality(mesh);
+  EXPECT_GT(result.flips, 0u);
+  EXPECT_GE(MR::quality_statistics(mesh).min_alpha, before);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+}
+
+// A 5 x 5 grid of the unit square, each cell split along its rising diagonal.
+MR::internal::Clough_tocher_interpolant grid_interpolant(
+    const std::function<double(double, double)>& f) {
+  std::vector<std::array<double, 2>> sites;
+  std::vector<double> values;
+  const int n = 5;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      sites.push_back({double(i) / n, double(j) / n});
+      values.push_back(f(double(i) / n, double(j) / n));
+    }
+  std::vector<std::array<int, 3>> triangles;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int a = j * (n + 1) + i;
+      triangles.push_back({a, a + 1, a + n + 2});
+      triangles.push_back({a, a + n + 2, a + n + 1});
+    }
+  return MR::internal::Clough_tocher_interpolant(sites, values, triangles);
+}
+
+TEST(CloughTocher, ReproducesQuadraticsExactly) {
+  // The gradient fit is exact on quadratics, and so are the cubic patches built from it.
+  auto f = [](double x, double y) { return 1 + 2 * x - y + 0.5 * x * x + x * y - 2 * y * y; };
+  const auto interpolant = grid_interpolant(f);
+  for (double x = 0.03; x < 1; x += 0.11)
+    for (double y = 0.05; y < 1; y += 0.13) EXPECT_NEAR(interpolant.value(x, y), f(x, y), 1e-9);
+}
+
+TEST(CloughTocher, GradientIsContinuousAcrossTriangleEdges) {
+  const auto interpolant =
+      grid_interpolant([](double x, double y) { return std::exp(x) * std::sin(3 * y); });
+  const double h = 1e-6;
+  // Midpoints and quarter points of interior edges: a diagonal (normal (1,-1)/sqrt 2) and a
+  // vertical cell side (normal (1, 0)); one-sided slopes across the edge must agree.
+  struct Probe {
+    double x, y, nx, ny;
+  };
+  const double s = 1 / std::sqrt(2.0);
+  const Probe probes[] = {
+      {0.5, 0.5, s, -s}, {0.45, 0.45, s, -s}, {0.4, 0.3, 1, 0}, {0.4, 0.35, 1, 0}};
+  for (const Probe& p : probes) {
+    const double centre = interpolant.value(p.x, p.y);
+    const double ahead = (interpolant.value(p.x + h * p.nx, p.y + h * p.ny) - centre) / h;
+    const double behind = (centre - interpolant.value(p.x - h * p.nx, p.y - h * p.ny)) / h;
+    EXPECT_NEAR(ahead, behind, 1e-4) << "at (" << p.x << ", " << p.y << ")";
+  }
+}
+
+}  // namespace

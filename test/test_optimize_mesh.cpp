@@ -1,0 +1,156 @@
+// Copyright (c) 2026 Mesh_repair developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <CGAL/Mesh_repair/generators.h>
+#include <CGAL/Mesh_repair/optimize_mesh.h>
+#include <CGAL/Mesh_repair/quality.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/distance.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Mesh = CGAL::Surface_mesh<Point>;
+namespace MR = CGAL::Mesh_repair;
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+void expect_valid(Mesh& mesh, bool closed) {
+  mesh.collect_garbage();
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  EXPECT_TRUE(CGAL::is_triangle_mesh(mesh));
+  if (closed) {
+    EXPECT_TRUE(CGAL::is_closed(mesh));
+  }
+  EXPECT_FALSE(PMP::does_self_intersect(mesh));
+}
+
+bool on_cube_edge(const Point& p, double size) {
+  int extreme = 0;
+  for (int k = 0; k < 3; ++k) extreme += (p[k] == 0 || p[k] == size);
+  return extreme >= 2;
+}
+
+TEST(OptimizeMesh, SubdividedCubeKeepsEightCornersAndTwelveFeatureLines) {
+  const double size = 1;
+  Mesh cube;
+  MR::make_subdivided_cube<Mesh, Point>(cube, size, 8);
+  const std::size_t input_faces = cube.number_of_faces();
+  const auto result = MR::optimize_mesh(cube, MR::parameters::target_face_ratio(0.1));
+  expect_valid(cube, true);
+  EXPECT_LT(cube.number_of_faces(), input_faces / 2);
+  EXPECT_EQ(result.corner_nodes, 8u);
+
+  std::set<std::array<double, 3>> corners;
+  for (auto v : cube.vertices()) {
+    const Point& p = cube.point(v);
+    int extreme = 0;
+    for (int k = 0; k < 3; ++k) extreme += (p[k] == 0 || p[k] == size);
+    if (extreme == 3) corners.insert({p.x(), p.y(), p.z()});
+  }
+  EXPECT_EQ(corners.size(), 8u);
+
+  // Every face stays inside one side of the cube (no face cuts a feature line), and the
+  // feature edges (on two cube planes at once) add up to the twelve edges of the cube.
+  for (auto f : cube.faces()) {
+    int common_planes = 0;
+    for (int k = 0; k < 3; ++k)
+      for (double value : {0.0, size}) {
+        bool all = true;
+        for (auto v : vertices_around_face(cube.halfedge(f), cube))
+          all &= cube.point(v)[k] == value;
+        common_planes += all;
+      }
+    EXPECT_EQ(common_planes, 1);
+  }
+  double feature_length = 0;
+  for (auto e : cube.edges()) {
+    const Point& a = cube.point(cube.vertex(e, 0));
+    const Point& b = cube.point(cube.vertex(e, 1));
+    if (on_cube_edge(a, size) && on_cube_edge(b, size) && on_cube_edge(CGAL::midpoint(a, b), size))
+      feature_length += std::sqrt(CGAL::squared_distance(a, b));
+  }
+  EXPECT_NEAR(feature_length, 12 * size, 1e-12);
+}
+
+TEST(OptimizeMesh, PlanarGridReducesToFewTrianglesWithZeroHausdorffError) {
+  Mesh grid;
+  MR::make_height_field<Mesh, Point>(grid, 0, 1, 0, 1, 20, 20, [](double, double) { return 0.0; });
+  const Mesh input = grid;
+  MR::optimize_mesh(grid, MR::parameters::target_face_ratio(0.01));
+  expect_valid(grid, false);
+  EXPECT_LE(grid.number_of_faces(), 40u);
+  const double there = PMP::approximate_Hausdorff_distance<CGAL::Sequential_tag>(
+      grid, input, PMP::parameters::number_of_points_per_area_unit(4000));
+  const double back = PMP::approximate_Hausdorff_distance<CGAL::Sequential_tag>(
+      input, grid, PMP::parameters::number_of_points_per_area_unit(4000));
+  EXPECT_EQ(there, 0.0);
+  EXPECT_EQ(back, 0.0);
+  EXPECT_NEAR(PMP::area(grid), 1.0, 1e-12);
+}
+
+// A planar parallelogram grid whose cells are split along their long diagonal: every triangle is
+// a sliver although the short diagonals would give good ones.
+Mesh sliver_grid(int n) {
+  Mesh mesh;
+  std::vector<Mesh::Vertex_index> v;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) v.push_back(mesh.add_vertex(Point(i + 0.85 * j, 0.25 * j, 0)));
+  auto at = [&](int i, int j) { return v[std::size_t(j) * (n + 1) + i]; };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      mesh.add_face(at(i, j), at(i + 1, j), at(i + 1, j + 1));
+      mesh.add_face(at(i, j), at(i + 1, j + 1), at(i, j + 1));
+    }
+  return mesh;
+}
+
+TEST(OptimizeMesh, QualityModeRaisesMinimumAngleOfSliversAtConstantFaceCount) {
+  Mesh mesh = sliver_grid(12);
+  const auto before = MR::quality_statistics(mesh);
+  const std::size_t faces = mesh.number_of_faces();
+  const auto result =
+      MR::optimize_mesh(mesh, MR::parameters::optimization_mode(MR::Optimization_mode::quality));
+  expect_valid(mesh, false);
+  const auto after = MR::quality_statistics(mesh);
+  EXPECT_GT(result.regions_replaced, 0u);
+  EXPECT_LE(std::abs(double(mesh.number_of_faces()) - double(faces)), 0.05 * faces);
+  EXPECT_GT(after.mean_alpha, before.mean_alpha);
+  EXPECT_GT(after.min_angle_deg, before.min_angle_deg);
+}
+
+TEST(OptimizeMesh, ClosedSphereStaysClosedValidAndIntersectionFree) {
+  Mesh sphere;
+  MR::make_sphere(sphere, Point(0, 0, 0), 1.0, 4);
+  const auto result =
+      MR::optimize_mesh(sphere, MR::parameters::target_face_ratio(0.3).random_seed(3u));
+  expect_valid(sphere, true);
+  EXPECT_GT(result.regions_replaced, 0u);
+  EXPECT_LT(sphere.number_of_faces(), result.input_faces);
+}
+
+TEST(OptimizeMesh, SameSeedGivesSameMesh) {
+  Mesh a, b;
+  MR::make_sphere(a, Point(0, 0, 0), 1.0, 3);
+  MR::make_sphere(b, Point(0, 0, 0), 1.0, 3);
+  MR::optimize_mesh(a, MR::parameters::target_face_ratio(0.4).random_seed(11u));
+  MR::optimize_mesh(b, MR::parameters::target_face_ratio(0.4).random_seed(11u));
+  a.collect_garbage();
+  b.collect_garbage();
+  ASSERT_EQ(a.number_of_faces(), b.number_of_faces());
+  auto fa = a.faces().begin();
+  for (auto f : b.faces()) {
+    auto ha = a.halfedge(*fa++), hb = b.halfedge(f);
+    EXPECT_EQ(a.point(a.target(ha)), b.point(b.target(hb)));
+  }
+}
+
+}  // namespace

@@ -1,0 +1,225 @@
+// Copyright (c) 2026 Mesh_repair developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Hole filling with shape prediction (thesis chapter 5), including the sphere and torus cases
+// of thesis Figures 5.15-5.16 against Table 5.3.
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Mesh_repair/fill_holes.h>
+#include <CGAL/Mesh_repair/generators.h>
+#include <CGAL/Mesh_repair/implant_patch.h>
+#include <CGAL/Mesh_repair/hole_filling/shape_prediction.h>
+#include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <unordered_set>
+
+namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = K::Point_3;
+using Mesh = CGAL::Surface_mesh<Point>;
+namespace MR = CGAL::Mesh_repair;
+namespace PMP = CGAL::Polygon_mesh_processing;
+namespace sp = CGAL::Mesh_repair::internal::shape_prediction;
+
+// Removes the faces whose centroid satisfies `inside`; returns a border halfedge of the hole.
+Mesh::Halfedge_index punch(Mesh& mesh, const std::function<bool(const Point&)>& inside) {
+  std::vector<Mesh::Face_index> doomed;
+  for (auto f : mesh.faces()) {
+    std::vector<Point> corners;
+    for (auto v : vertices_around_face(mesh.halfedge(f), mesh)) corners.push_back(mesh.point(v));
+    if (inside(CGAL::centroid(corners[0], corners[1], corners[2]))) doomed.push_back(f);
+  }
+  std::unordered_set<Mesh::Halfedge_index> old_border;
+  for (auto h : mesh.halfedges())
+    if (mesh.is_border(h)) old_border.insert(h);
+  for (auto f : doomed) CGAL::Euler::remove_face(mesh.halfedge(f), mesh);
+  for (auto h : mesh.halfedges())
+    if (mesh.is_border(h) && !old_border.count(h)) return h;
+  return Mesh::null_halfedge();
+}
+
+std::size_t border_cycle_count(const Mesh& mesh) {
+  std::vector<Mesh::Halfedge_index> cycles;
+  PMP::extract_boundary_cycles(mesh, std::back_inserter(cycles));
+  return cycles.size();
+}
+
+// Max distance of the patch vertices to the surface, over the bounding-box diagonal (Table 5.3).
+double normalised_einf(const Mesh& mesh, const MR::Fill_patch<Mesh>& patch,
+                       const std::function<double(const Point&)>& distance, double diagonal) {
+  double worst = 0;
+  for (auto v : patch.vertices) worst = std::max(worst, distance(mesh.point(v)));
+  return worst / diagonal;
+}
+
+// A unit sphere (like the thesis' sphere: E_inf 0.01173 over 0.00339 = diagonal 2 sqrt 3) with a
+// hole of angular radius 40 degrees and a crenellated border (+-20%, five lobes), Fig. 5.15.
+Mesh::Halfedge_index sphere_with_hole(Mesh& mesh) {
+  MR::make_sphere(mesh, Point(0, 0, 0), 1.0, 4);
+  return punch(mesh, [](const Point& c) {
+    const double polar = std::acos(c.z() / std::sqrt((c - CGAL::ORIGIN).squared_length()));
+    const double azimuth = std::atan2(c.y(), c.x());
+    return polar < (40.0 * CGAL_PI / 180) * (1 + 0.2 * std::sin(5 * azimuth));
+  });
+}
+
+double sphere_distance(const Point& p) {
+  return std::abs(std::sqrt((p - CGAL::ORIGIN).squared_length()) - 1);
+}
+
+constexpr double torus_major = 1.2, torus_minor = 0.4;
+double torus_distance(const Point& p) {
+  const double ring = std::sqrt(p.x() * p.x() + p.y() * p.y()) - torus_major;
+  return std::abs(std::sqrt(ring * ring + p.z() * p.z()) - torus_minor);
+}
+
+// A hole across the top of the tube, where the Gaussian curvature changes sign (Fig. 5.16).
+Mesh::Halfedge_index torus_with_hole(Mesh& mesh) {
+  MR::make_torus<Mesh, Point>(mesh, torus_major, torus_minor, 96, 32);
+  return punch(mesh, [](const Point& c) {
+    const double u = std::atan2(c.y(), c.x());
+    const double v = std::atan2(c.z(), std::sqrt(c.x() * c.x() + c.y() * c.y()) - torus_major);
+    const double du = (u - 0.3) / 0.35, dv = (v - CGAL_PI / 2) / 1.0;
+    return du * du + dv * dv < 1;
+  });
+}
+
+TEST(ShapePrediction, RoughSetTableDecidesRemovalAsEq56) {
+  EXPECT_TRUE(sp::in_d_remove(sp::alpha_class(170), sp::beta_class(5)));     // n1
+  EXPECT_TRUE(sp::in_d_remove(sp::alpha_class(150), sp::beta_class(5)));     // n2
+  EXPECT_FALSE(sp::in_d_remove(sp::alpha_class(100), sp::beta_class(5)));    // n4
+  EXPECT_FALSE(sp::in_d_remove(sp::alpha_class(60), sp::beta_class(5)));     // n6
+  EXPECT_FALSE(sp::in_d_remove(sp::alpha_class(170), sp::beta_class(100)));  // (alpha1, beta1)
+  EXPECT_TRUE(sp::in_d_remove(sp::alpha_class(30), sp::beta_class(5)));      // n8
+  EXPECT_FALSE(sp::in_d_remove(sp::alpha_class(130), sp::beta_class(20)));   // n3 (alpha2,beta4)
+}
+
+TEST(ShapePrediction, SimplificationKeepsTheBorderShape) {
+  // A flat square border with 10 nodes per side: only the four corners are essential.
+  sp::Hole_polygon<K> hole;
+  for (int side = 0; side < 4; ++side)
+    for (int k = 0; k < 10; ++k) {
+      const double t = k / 10.0;
+      const double xy[4][2] = {{t, 0}, {1, t}, {1 - t, 1}, {0, 1 - t}};
+      hole.points.emplace_back(xy[side][0], xy[side][1], 0);
+    }
+  hole.normals.assign(40, K::Vector_3(0, 0, 1));
+  hole.outside.assign(40, K::Vector_3(0, 0, 1));
+  const auto preserve = sp::rough_set_preserved(hole, hole.points);
+  const auto essential = sp::essential_nodes<K>(hole.points, preserve, 0.1);
+  EXPECT_EQ(essential, (std::vector<int>{0, 10, 20, 30}));
+  sp::Shape_estimate_options options;
+  const auto estimate = sp::estimate_shape(hole, options);
+  ASSERT_TRUE(estimate.ok);
+  EXPECT_EQ(estimate.triangles.size(), 38u);  // every removed node put back: n - 2 triangles
+}
+
+TEST(ShapePrediction, PlanarHoleIsFilledInItsPlane) {
+  Mesh mesh;
+  MR::make_height_field<Mesh, Point>(mesh, -1, 1, -1, 1, 24, 24,
+                                     [](double, double) { return 0.0; });
+  const auto h =
+      punch(mesh, [](const Point& c) { return c.x() * c.x() + 2 * c.y() * c.y() < 0.3; });
+  const std::size_t before = border_cycle_count(mesh);
+  MR::Fill_patch<Mesh> patch;
+  const auto report = MR::fill_hole_shape_prediction(mesh, h, patch);
+  ASSERT_TRUE(report.filled) << report.failure;
+  EXPECT_EQ(border_cycle_count(mesh), before - 1);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  for (auto v : patch.vertices) EXPECT_LT(std::abs(mesh.point(v).z()), 1e-12);
+  EXPECT_FALSE(PMP::does_self_intersect(mesh));
+}
+
+TEST(ShapePrediction, SphereHoleOfFigure515MeetsTable53) {
+  Mesh mesh;
+  const auto h = sphere_with_hole(mesh);
+  MR::Fill_patch<Mesh> patch;
+  const auto report =
+      MR::fill_hole_shape_prediction(mesh, h, patch, CGAL::parameters::random_seed(1u));
+  ASSERT_TRUE(report.filled) << report.failure;
+  EXPECT_EQ(border_cycle_count(mesh), 0u);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  EXPECT_TRUE(CGAL::is_closed(mesh));
+  EXPECT_FALSE(PMP::does_self_intersect(mesh));
+  EXPECT_GT(patch.vertices.size(), 50u);
+  const double einf = normalised_einf(mesh, patch, sphere_distance, 2 * std::sqrt(3.0));
+  EXPECT_LE(einf, 0.00339);  // thesis Table 5.3, sphere
+  RecordProperty("normalised_einf", std::to_string(einf));
+}
+
+TEST(ShapePrediction, TorusHoleOfFigure516MeetsTable53) {
+  Mesh mesh;
+  const auto h = torus_with_hole(mesh);
+  MR::Fill_patch<Mesh> patch;
+  const auto report =
+      MR::fill_hole_shape_prediction(mesh, h, patch, CGAL::parameters::random_seed(1u));
+  ASSERT_TRUE(report.filled) << report.failure;
+  EXPECT_TRUE(CGAL::is_closed(mesh));
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  EXPECT_FALSE(PMP::does_self_intersect(mesh));
+  const double diagonal =
+      std::sqrt(2 * std::pow(2 * (torus_major + torus_minor), 2) + std::pow(2 * torus_minor, 2));
+  const double einf = normalised_einf(mesh, patch, torus_distance, diagonal);
+  EXPECT_LE(einf, 0.00887);  // thesis Table 5.3, torus
+  RecordProperty("normalised_einf", std::to_string(einf));
+}
+
+TEST(ShapePrediction, SameSeedGivesTheSamePatch) {
+  std::vector<Point> first, second;
+  for (auto* out : {&first, &second}) {
+    Mesh mesh;
+    const auto h = torus_with_hole(mesh);
+    MR::Fill_patch<Mesh> patch;
+    MR::fill_hole_shape_prediction(
+        mesh, h, patch, MR::parameters::target_fitness(1.0).max_generations(50).random_seed(5u));
+    for (auto v : patch.vertices) out->push_back(mesh.point(v));
+  }
+  EXPECT_FALSE(first.empty());
+  EXPECT_EQ(first, second);
+}
+
+TEST(ShapePrediction, DispatcherFillsWithShapePredictionAndKeepsTheMeshValid) {
+  Mesh mesh;
+  const auto h = torus_with_hole(mesh);
+  MR::Fill_patch<Mesh> patch;
+  const auto report =
+      MR::fill_hole(mesh, h, patch, MR::parameters::fill_method(MR::Fill_method::shape_prediction));
+  ASSERT_TRUE(report.filled) << report.failure;
+  EXPECT_EQ(report.used, MR::Fill_method::shape_prediction);
+  EXPECT_TRUE(report.fallbacks.empty());
+  EXPECT_TRUE(CGAL::is_closed(mesh));
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+}
+
+TEST(ShapePrediction, ThickenedImplantPatchIsAClosedSolid) {
+  Mesh mesh;
+  const auto h = sphere_with_hole(mesh);
+  MR::Fill_patch<Mesh> patch;
+  ASSERT_TRUE(MR::fill_hole_shape_prediction(mesh, h, patch).filled);
+  const Mesh implant = MR::extract_patch(mesh, patch.faces);
+  EXPECT_EQ(implant.number_of_faces(), patch.faces.size());
+  EXPECT_EQ(border_cycle_count(implant), 1u);
+  const Mesh solid = MR::thicken_patch(implant, 0.02);
+  EXPECT_TRUE(CGAL::is_closed(solid));
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(solid));
+  EXPECT_FALSE(PMP::does_self_intersect(solid));
+  EXPECT_EQ(
+      solid.number_of_faces(), 2 * implant.number_of_faces() + 2 * [&] {
+        std::size_t n = 0;
+        for (auto hh : implant.halfedges()) n += implant.is_border(hh) ? 1 : 0;
+        return n;
+      }());
+  // The inner surface lies up to 0.02 below the sphere (less at the rim, whose normals lean
+  // outwards since only the patch's own faces define them).
+  for (auto v : solid.vertices()) {
+    const double r = std::sqrt((solid.point(v) - CGAL::ORIGIN).squared_length());
+    EXPECT_TRUE(r > 0.979 && r < 1.005) << r;
+  }
+}
+
+}  // namespace
