@@ -80,7 +80,9 @@ TEST(AutomaticRepair, KeepsEveryComponentUnlessAskedAndCountsRemovals) {
   MR::make_sphere(mesh, Point(5, 0, 0), 0.5, 1);
   Mesh kept = mesh;
   MR::automatic_repair(kept);
-  EXPECT_EQ(PMP::connected_components(kept, kept.add_property_map<Mesh::Face_index, std::size_t>("f:cc").first), 2u);
+  EXPECT_EQ(PMP::connected_components(
+                kept, kept.add_property_map<Mesh::Face_index, std::size_t>("f:cc").first),
+            2u);
   const auto result = MR::automatic_repair(mesh, MR::parameters::keep_largest_component(true));
   EXPECT_EQ(result.components_removed, 1u);
   EXPECT_EQ(result.faces_removed_with_components, 80u);
@@ -104,7 +106,8 @@ TEST(AutomaticRepair, BundledDefectivePartBecomesClosedAndValid) {
 TEST(AutomaticRepair, RealScansWithHolesBecomeClosed) {
   for (const char* name : {"elephant-with-holes.off", "mech-holes-shark.off"}) {
     const std::string path = std::string(MESH_REPAIR_DEMO_DATA_DIR) + "/" + name;
-    if (!std::filesystem::exists(path)) GTEST_SKIP() << "libcgal-demo meshes absent (" << path << ")";
+    if (!std::filesystem::exists(path))
+      GTEST_SKIP() << "libcgal-demo meshes absent (" << path << ")";
     Mesh mesh;
     MR::Soup_repair_report soup;
     ASSERT_EQ(MR::read_mesh(path, mesh, soup), "") << name;

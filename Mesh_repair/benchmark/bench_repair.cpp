@@ -69,12 +69,14 @@ int main(int argc, char** argv) {
     Mesh mesh = input;
     const auto start = std::chrono::steady_clock::now();
     const auto result = MR::automatic_repair(mesh, MR::parameters::number_of_threads(threads));
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::cout << "threads " << threads << ": " << seconds << " s total, " << result.holes.filled
               << " holes filled, " << (result.closed ? "closed" : "open") << ", "
               << (result.valid ? "valid" : "INVALID") << ", peak memory " << peak_memory_mib()
               << " MiB\n| step | seconds |\n|---|---|\n";
-    for (const auto& step : result.steps) std::cout << "| " << step.name << " | " << step.seconds << " |\n";
+    for (const auto& step : result.steps)
+      std::cout << "| " << step.name << " | " << step.seconds << " |\n";
     std::cout << '\n';
   }
   return 0;

@@ -25,16 +25,16 @@ struct Job {
   fs::path input, output, report, summary, log;
   pid_t pid = -1;
   std::chrono::steady_clock::time_point start;
-  int status = -1;          ///< exit status of the child, or -1 when it did not exit normally
-  std::string outcome;      ///< "repaired", "incomplete", "failed", "crashed", "timeout"
+  int status = -1;      ///< exit status of the child, or -1 when it did not exit normally
+  std::string outcome;  ///< "repaired", "incomplete", "failed", "crashed", "timeout"
   double seconds = 0;
   std::map<std::string, std::string> figures;  ///< from the child's summary file
 };
 
 // Options passed on to each child: everything but the batch options themselves.
 std::vector<std::string> child_options(const std::vector<std::string>& raw) {
-  static const std::set<std::string> batch_only = {"--batch", "--out-dir", "--jobs", "--timeout",
-                                                   "-o", "--report", "--summary"};
+  static const std::set<std::string> batch_only = {"--batch", "--out-dir", "--jobs",   "--timeout",
+                                                   "-o",      "--report",  "--summary"};
   std::vector<std::string> kept;
   for (std::size_t i = 0; i < raw.size(); ++i) {
     const std::string name = raw[i].substr(0, raw[i].find('='));
@@ -60,9 +60,9 @@ std::vector<fs::path> mesh_files(const fs::path& folder) {
 }
 
 pid_t start_child(Job& job, const std::vector<std::string>& options) {
-  std::vector<std::string> words = {"mesh_repair", "repair", job.input.string(), "-o",
-                                    job.output.string(), "--report", job.report.string(),
-                                    "--summary", job.summary.string()};
+  std::vector<std::string> words = {
+      "mesh_repair",       "repair",    job.input.string(),  "-o", job.output.string(), "--report",
+      job.report.string(), "--summary", job.summary.string()};
   words.insert(words.end(), options.begin(), options.end());
   job.start = std::chrono::steady_clock::now();
   const pid_t pid = ::fork();
@@ -104,10 +104,18 @@ void finish(Job& job, int raw_status, bool timed_out) {
   read_figures(job);
 }
 
-const std::vector<std::string> figure_keys = {
-    "faces_before", "faces_after", "holes", "holes_filled", "holes_failed", "holes_too_large",
-    "border_cycles_after", "closed", "valid", "manifold", "self_intersections_before",
-    "self_intersections_after"};
+const std::vector<std::string> figure_keys = {"faces_before",
+                                              "faces_after",
+                                              "holes",
+                                              "holes_filled",
+                                              "holes_failed",
+                                              "holes_too_large",
+                                              "border_cycles_after",
+                                              "closed",
+                                              "valid",
+                                              "manifold",
+                                              "self_intersections_before",
+                                              "self_intersections_after"};
 
 void write_summaries(const fs::path& out_dir, const std::vector<Job>& jobs) {
   std::ostringstream csv, jsonl;
@@ -145,7 +153,8 @@ int run_batch_repair(const Arguments& args, const std::vector<std::string>& raw_
   if (jobs_at_once < 1) throw Input_error("--jobs must be at least 1");
   if (timeout <= 0) throw Input_error("--timeout must be positive");
   fs::create_directories(out_dir);
-  if (fs::equivalent(in_dir, out_dir)) throw Input_error("--out-dir must differ from the input folder");
+  if (fs::equivalent(in_dir, out_dir))
+    throw Input_error("--out-dir must differ from the input folder");
 
   const std::vector<std::string> options = child_options(raw_args);
   std::vector<Job> jobs;
@@ -172,9 +181,10 @@ int run_batch_repair(const Arguments& args, const std::vector<std::string>& raw_
       if (job.pid <= 0) continue;
       int raw = 0;
       const pid_t got = ::waitpid(job.pid, &raw, WNOHANG);
-      const bool timed_out = got == 0 && std::chrono::duration<double>(
-                                             std::chrono::steady_clock::now() - job.start)
-                                                 .count() > timeout;
+      const bool timed_out =
+          got == 0 &&
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - job.start).count() >
+              timeout;
       if (timed_out) {
         ::kill(job.pid, SIGKILL);
         ::waitpid(job.pid, &raw, 0);

@@ -116,10 +116,10 @@ Curvature_options parse_curvature_options(const Arguments& arguments) {
 
 int run_fill(const std::vector<std::string>& args) {
   namespace MR = CGAL::Mesh_repair;
-  Arguments arguments(args, {"--quiet", "--no-ring-holes"},
-                      {"-o", "--method", "--continuity", "--max-hole-edges", "--max-hole-size",
-                       "--seed", "--report", "--objective", "--nodes", "--grid", "--force-density",
-                       "--constraints"});
+  Arguments arguments(
+      args, {"--quiet", "--no-ring-holes"},
+      {"-o", "--method", "--continuity", "--max-hole-edges", "--max-hole-size", "--seed",
+       "--report", "--objective", "--nodes", "--grid", "--force-density", "--constraints"});
   const std::string input = arguments.single_input(fill_help);
   if (!arguments.has("-o")) throw Input_error("missing -o OUT; usage: " + std::string(fill_help));
   const MR::Fill_method method = parse_method(arguments.get("--method", "auto"));

@@ -21,9 +21,11 @@ namespace mesh_repair_cli {
 
 const char* const repair_help =
     "usage: mesh_repair repair IN -o OUT [options]\n"
-    "       mesh_repair repair --batch IN_DIR --out-dir OUT_DIR [--jobs N] [--timeout S] [options]\n"
+    "       mesh_repair repair --batch IN_DIR --out-dir OUT_DIR [--jobs N] [--timeout S] "
+    "[options]\n"
     "\n"
-    "Repairs a mesh into a valid, watertight one: soup repair and orientation, exact and tolerance\n"
+    "Repairs a mesh into a valid, watertight one: soup repair and orientation, exact and "
+    "tolerance\n"
     "stitching of gaps and overlaps, T-junctions, non-manifold vertices, degenerate faces, hole\n"
     "filling (thesis ch. 3). Every change is counted in the report.\n"
     "\n"
@@ -55,20 +57,26 @@ const char* const repair_help =
 
 namespace {
 
-const std::set<std::string> repair_flags = {
-    "--keep-components", "--largest-component", "--no-ring-holes", "--no-self-intersections",
-    "--remove-self-intersections", "--binary", "--quiet"};
+const std::set<std::string> repair_flags = {"--keep-components",
+                                            "--largest-component",
+                                            "--no-ring-holes",
+                                            "--no-self-intersections",
+                                            "--remove-self-intersections",
+                                            "--binary",
+                                            "--quiet"};
 const std::set<std::string> repair_valued = {
-    "-o", "--report", "--tolerance", "--tolerance-rel", "--fill", "--continuity",
-    "--max-hole-size", "--max-hole-edges", "--threads", "--seed", "--batch", "--out-dir",
-    "--jobs", "--timeout", "--summary"};
+    "-o",           "--report",        "--tolerance",      "--tolerance-rel", "--fill",
+    "--continuity", "--max-hole-size", "--max-hole-edges", "--threads",       "--seed",
+    "--batch",      "--out-dir",       "--jobs",           "--timeout",       "--summary"};
 
 CGAL::Mesh_repair::Fill_method fill_option(const Arguments& args) {
   CGAL::Mesh_repair::Fill_method method = CGAL::Mesh_repair::Fill_method::automatic;
   const std::string name = args.get("--fill", "auto");
   if (!CGAL::Mesh_repair::fill_method_from_string(name, method))
-    throw Input_error("--fill expects auto, advancing_front, shape_prediction, "
-                      "curvature_variation or liepa, got '" + name + "'");
+    throw Input_error(
+        "--fill expects auto, advancing_front, shape_prediction, "
+        "curvature_variation or liepa, got '" +
+        name + "'");
   return method;
 }
 
@@ -131,8 +139,8 @@ std::string report_json(const std::string& input, const std::string& output,
 }
 
 // The few figures a batch run collects from each file, one `key=value` per line.
-void write_summary(const std::string& path, int status,
-                   const CGAL::Mesh_repair::Repair_result& r, double seconds) {
+void write_summary(const std::string& path, int status, const CGAL::Mesh_repair::Repair_result& r,
+                   double seconds) {
   std::ostringstream out;
   out << "status=" << status << "\nfaces_before=" << r.input_faces
       << "\nfaces_after=" << r.output_faces << "\nholes=" << r.holes.holes.size()
@@ -177,8 +185,10 @@ int repair_one(const Arguments& args) {
       mesh, MR::parameters::merge_tolerance(tolerance)
                 .fill_method(fill_option(args))
                 .fairing_continuity(unsigned(continuity))
-                .max_hole_size(args.get_double("--max-hole-size", std::numeric_limits<double>::infinity()))
-                .max_hole_edges(std::size_t(args.get_int("--max-hole-edges", std::numeric_limits<long long>::max())))
+                .max_hole_size(
+                    args.get_double("--max-hole-size", std::numeric_limits<double>::infinity()))
+                .max_hole_edges(std::size_t(
+                    args.get_int("--max-hole-edges", std::numeric_limits<long long>::max())))
                 .keep_largest_component(args.has("--largest-component"))
                 .detect_ring_holes(!args.has("--no-ring-holes"))
                 .detect_self_intersections(!args.has("--no-self-intersections"))
@@ -191,17 +201,20 @@ int repair_one(const Arguments& args) {
   save_mesh(output, mesh, args.has("--binary"));
   const double seconds = seconds_since(start);
   const int status = result.complete() ? exit_success : exit_incomplete;
-  if (args.has("--report")) save_text(args.get("--report"), report_json(input, output, soup, before, after, result, seconds));
+  if (args.has("--report"))
+    save_text(args.get("--report"),
+              report_json(input, output, soup, before, after, result, seconds));
   if (args.has("--summary")) write_summary(args.get("--summary"), status, result, seconds);
   print_summary(input, soup, result);
   const auto c0 = MR::counts(before), c1 = MR::counts(after);
-  std::cout << "defects before -> after: border cycles " << c0.border_cycles << " -> " << c1.border_cycles
-            << ", non-manifold edges " << c0.non_manifold_edges << " -> " << c1.non_manifold_edges
-            << ", duplicated faces " << c0.duplicated_faces << " -> " << c1.duplicated_faces
-            << ", degenerate faces " << c0.degenerate_faces << " -> " << c1.degenerate_faces
-            << ", small gaps " << c0.small_gaps << " -> " << c1.small_gaps << ", T-junctions "
-            << c0.t_junctions << " -> " << c1.t_junctions << ", self-intersections "
-            << result.self_intersections_input << " -> " << result.self_intersections_output << '\n';
+  std::cout << "defects before -> after: border cycles " << c0.border_cycles << " -> "
+            << c1.border_cycles << ", non-manifold edges " << c0.non_manifold_edges << " -> "
+            << c1.non_manifold_edges << ", duplicated faces " << c0.duplicated_faces << " -> "
+            << c1.duplicated_faces << ", degenerate faces " << c0.degenerate_faces << " -> "
+            << c1.degenerate_faces << ", small gaps " << c0.small_gaps << " -> " << c1.small_gaps
+            << ", T-junctions " << c0.t_junctions << " -> " << c1.t_junctions
+            << ", self-intersections " << result.self_intersections_input << " -> "
+            << result.self_intersections_output << '\n';
   std::cout << "wrote " << output << " in " << seconds << " s\n";
   return status;
 }

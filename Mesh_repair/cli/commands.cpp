@@ -7,7 +7,8 @@ namespace mesh_repair_cli {
 const std::vector<Command>& commands() {
   static const std::vector<Command> table = {
       {"check", "report every defect of a mesh (text and JSON)", check_help, run_check},
-      {"repair", "repair a mesh (or a folder) into a valid watertight one", repair_help, run_repair},
+      {"repair", "repair a mesh (or a folder) into a valid watertight one", repair_help,
+       run_repair},
       {"fill", "fill holes (advancing front, Liepa, ...) with exact patch checks", fill_help,
        run_fill},
       {"smooth", "micro-GA, conjugate-gradient or CGAL smoothing, triangles or quads", smooth_help,

@@ -119,7 +119,8 @@ Repair_result automatic_repair(PolygonMesh& pm,
       choose_parameter(get_parameter_reference(np, CGAL::internal_np::visitor), default_visitor);
 
   internal::Repair_options options;
-  options.merge_tolerance = choose_parameter(get_parameter(np, internal_np::merge_tolerance_t{}), -1.0);
+  options.merge_tolerance =
+      choose_parameter(get_parameter(np, internal_np::merge_tolerance_t{}), -1.0);
   options.keep_largest_component =
       choose_parameter(get_parameter(np, internal_np::keep_largest_component_t{}), false);
   options.clean_hole_contours =
@@ -130,14 +131,16 @@ Repair_result automatic_repair(PolygonMesh& pm,
       choose_parameter(get_parameter(np, internal_np::repair_self_intersections_t{}), false);
 
   internal::Region_fill_options& fill = options.fill;
-  fill.method = choose_parameter(get_parameter(np, internal_np::fill_method_t{}), Fill_method::automatic);
+  fill.method =
+      choose_parameter(get_parameter(np, internal_np::fill_method_t{}), Fill_method::automatic);
   fill.continuity = choose_parameter(get_parameter(np, CGAL::internal_np::fairing_continuity), 1u);
   fill.seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0u);
   fill.max_hole_size = choose_parameter(get_parameter(np, internal_np::max_hole_size_t{}),
                                         std::numeric_limits<double>::infinity());
   fill.max_hole_edges = choose_parameter(get_parameter(np, internal_np::max_hole_edges_t{}),
                                          std::numeric_limits<std::size_t>::max());
-  fill.detect_ring_holes = choose_parameter(get_parameter(np, internal_np::detect_ring_holes_t{}), true);
+  fill.detect_ring_holes =
+      choose_parameter(get_parameter(np, internal_np::detect_ring_holes_t{}), true);
   fill.threads = choose_parameter(get_parameter(np, internal_np::number_of_threads_t{}), 0);
 
   return internal::run_repair_pipeline(pm, vpm, options, visitor);

@@ -73,10 +73,10 @@ using CGAL::parameters::get_parameter_reference;
 
 // CGAL's parameters as free functions too, so a chain may start with any of them and still
 // accept ours: `parameters::vertex_point_map(vpm).merge_tolerance(0.1)`.
-#define CGAL_add_named_parameter(X, Y, Z)                                             \
-  template <typename K>                                                               \
+#define CGAL_add_named_parameter(X, Y, Z)                                                   \
+  template <typename K>                                                                     \
   Named_parameters<K, CGAL::internal_np::X, CGAL::internal_np::No_property> Z(const K& k) { \
-    return {k};                                                                       \
+    return {k};                                                                             \
   }
 #include <CGAL/STL_Extension/internal/parameters_interface.h>
 #undef CGAL_add_named_parameter

@@ -17,7 +17,7 @@ MESH_REPAIR_PARAMETER(feature_angle_deg)          // dihedral angle below which 
 MESH_REPAIR_PARAMETER(detect_self_intersections)  // bool
 MESH_REPAIR_PARAMETER(histogram_bins)             // number of bins of the quality histograms
 MESH_REPAIR_PARAMETER(use_cubic_curves)           // bool, thesis 4.3.1
-MESH_REPAIR_PARAMETER(tolerance_edge_length)      // thesis 4.5: sliver edges shorter than this collapse
+MESH_REPAIR_PARAMETER(tolerance_edge_length)  // thesis 4.5: sliver edges shorter than this collapse
 
 // hole filling
 MESH_REPAIR_PARAMETER(fill_method)               // Fill_method
@@ -27,13 +27,13 @@ MESH_REPAIR_PARAMETER(detect_ring_holes)         // bool: bridge islands into th
 MESH_REPAIR_PARAMETER(hole_filter)               // predicate on a hole description
 MESH_REPAIR_PARAMETER(check_self_intersections)  // bool: exact check of every patch
 MESH_REPAIR_PARAMETER(fit_quadric)  // bool: advancing front projects new nodes on a fitted quadric
-MESH_REPAIR_PARAMETER(curvature_objective)  // Curvature_objective, Pernot eq. 8 or 9
-MESH_REPAIR_PARAMETER(objective_nodes)      // Objective_nodes: free, or free and contour
-MESH_REPAIR_PARAMETER(topological_grid)     // Topological_grid: disc or refined Liepa
-MESH_REPAIR_PARAMETER(force_density)        // Force_density: uniform, inverse length, cotangent
+MESH_REPAIR_PARAMETER(curvature_objective)     // Curvature_objective, Pernot eq. 8 or 9
+MESH_REPAIR_PARAMETER(objective_nodes)         // Objective_nodes: free, or free and contour
+MESH_REPAIR_PARAMETER(topological_grid)        // Topological_grid: disc or refined Liepa
+MESH_REPAIR_PARAMETER(force_density)           // Force_density: uniform, inverse length, cotangent
 MESH_REPAIR_PARAMETER(area_normalized_forces)  // bool: objective on f_i / A_i
-MESH_REPAIR_PARAMETER(fill_constraints)     // Fill_constraints<Point>, Pernot 6.4
-MESH_REPAIR_PARAMETER(deformation_report)   // Curvature_deformation_report*, filled on return
+MESH_REPAIR_PARAMETER(fill_constraints)        // Fill_constraints<Point>, Pernot 6.4
+MESH_REPAIR_PARAMETER(deformation_report)      // Curvature_deformation_report*, filled on return
 
 // hole-contour cleaning (Pernot 4)
 MESH_REPAIR_PARAMETER(remove_badly_oriented_triangles)  // bool, Pernot 4.1
@@ -49,8 +49,8 @@ MESH_REPAIR_PARAMETER(max_generations)
 MESH_REPAIR_PARAMETER(target_fitness)
 MESH_REPAIR_PARAMETER(boundary_smoothing_iterations)  // shape prediction: eq. 5.1 passes
 MESH_REPAIR_PARAMETER(use_rough_set_simplification)   // bool, shape prediction 5.3.2
-MESH_REPAIR_PARAMETER(fitness_weights)                // std::array<double,3>: w_a, w_b, w_c of eq. 5.13
-MESH_REPAIR_PARAMETER(curvature_flow_iterations)      // shape prediction: smoothing on the patches
+MESH_REPAIR_PARAMETER(fitness_weights)            // std::array<double,3>: w_a, w_b, w_c of eq. 5.13
+MESH_REPAIR_PARAMETER(curvature_flow_iterations)  // shape prediction: smoothing on the patches
 
 // mesh optimisation (optimize_mesh.h, thesis ch. 7)
 MESH_REPAIR_PARAMETER(optimization_mode)          // Optimization_mode: reduction or quality

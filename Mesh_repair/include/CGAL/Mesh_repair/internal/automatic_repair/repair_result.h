@@ -34,14 +34,14 @@ struct Repair_step_report {
 /// What `automatic_repair` did and what is left.
 struct Repair_result {
   std::vector<Repair_step_report> steps;
-  Fill_result holes;                     ///< every hole, filled or not, with its method
-  std::size_t holes_too_large = 0;       ///< left open by `max_hole_size` / `max_hole_edges`
+  Fill_result holes;                ///< every hole, filled or not, with its method
+  std::size_t holes_too_large = 0;  ///< left open by `max_hole_size` / `max_hole_edges`
   std::size_t input_vertices = 0, input_faces = 0;
   std::size_t output_vertices = 0, output_faces = 0;
-  std::size_t components_removed = 0;    ///< only with `keep_largest_component`
+  std::size_t components_removed = 0;  ///< only with `keep_largest_component`
   std::size_t faces_removed_with_components = 0;
-  std::size_t self_intersections_input = 0;   ///< pairs, when detection was asked
-  std::size_t self_intersections_output = 0;  ///< pairs, when detection was asked
+  std::size_t self_intersections_input = 0;       ///< pairs, when detection was asked
+  std::size_t self_intersections_output = 0;      ///< pairs, when detection was asked
   std::size_t self_intersections_in_patches = 0;  ///< pairs involving a patch or its ring
   std::size_t border_cycles_left = 0;
   bool valid = false, closed = false, manifold = false;
@@ -63,7 +63,8 @@ class Step_timer {
     start_ = std::chrono::steady_clock::now();
   }
   ~Step_timer() {
-    step_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    step_.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     result_.steps.push_back(std::move(step_));
   }
   Repair_step_report& step() { return step_; }
@@ -74,7 +75,8 @@ class Step_timer {
     Json_writer json(out, false);
     write_json(json, r);
     step_.details_json = out.str();
-    if (!step_.details_json.empty() && step_.details_json.back() == '\n') step_.details_json.pop_back();
+    if (!step_.details_json.empty() && step_.details_json.back() == '\n')
+      step_.details_json.pop_back();
   }
 
  private:

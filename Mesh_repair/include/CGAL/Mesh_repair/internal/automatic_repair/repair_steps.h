@@ -132,7 +132,8 @@ void step_close_slits(PolygonMesh& pm, VertexPointMap vpm, Repair_result& result
     for (halfedge_descriptor c : halfedges_around_face(h, pm)) cycle.push_back(target(c, pm));
     bool collinear = cycle.size() >= 3;
     for (std::size_t i = 2; i < cycle.size() && collinear; ++i)
-      collinear = Kernel().collinear_3_object()(get(vpm, cycle[0]), get(vpm, cycle[1]), get(vpm, cycle[i]));
+      collinear =
+          Kernel().collinear_3_object()(get(vpm, cycle[0]), get(vpm, cycle[1]), get(vpm, cycle[i]));
     if (!collinear) continue;
     // A fan from the cycle's first vertex, in the order of the border halfedges: the new faces
     // take those halfedges over.
@@ -159,7 +160,8 @@ std::size_t remove_degenerate_components(PolygonMesh& pm, VertexPointMap vpm) {
   namespace PMP = CGAL::Polygon_mesh_processing;
   std::vector<face_descriptor> seeds;
   for (face_descriptor f : faces(pm))
-    if (PMP::is_degenerate_triangle_face(f, pm, CGAL::parameters::vertex_point_map(vpm))) seeds.push_back(f);
+    if (PMP::is_degenerate_triangle_face(f, pm, CGAL::parameters::vertex_point_map(vpm)))
+      seeds.push_back(f);
   std::set<face_descriptor> doomed;
   for (face_descriptor seed : seeds) {
     if (doomed.count(seed)) continue;
@@ -167,8 +169,8 @@ std::size_t remove_degenerate_components(PolygonMesh& pm, VertexPointMap vpm) {
     PMP::connected_component(seed, pm, std::back_inserter(component));
     bool all_degenerate = true;
     for (face_descriptor f : component)
-      all_degenerate = all_degenerate &&
-                       PMP::is_degenerate_triangle_face(f, pm, CGAL::parameters::vertex_point_map(vpm));
+      all_degenerate = all_degenerate && PMP::is_degenerate_triangle_face(
+                                             f, pm, CGAL::parameters::vertex_point_map(vpm));
     if (all_degenerate) doomed.insert(component.begin(), component.end());
   }
   for (face_descriptor f : doomed) CGAL::Euler::remove_face(halfedge(f, pm), pm);
@@ -198,7 +200,8 @@ template <class PolygonMesh>
 void step_largest_component(PolygonMesh& pm, Repair_result& result) {
   Step_timer timer(result, "largest component");
   const std::size_t faces_before = count_faces(pm);
-  const std::size_t removed = CGAL::Polygon_mesh_processing::keep_largest_connected_components(pm, 1);
+  const std::size_t removed =
+      CGAL::Polygon_mesh_processing::keep_largest_connected_components(pm, 1);
   result.components_removed = removed;
   result.faces_removed_with_components = faces_before - count_faces(pm);
   timer.count("components_removed", double(removed));
@@ -274,7 +277,8 @@ inline void list_remaining(Repair_result& result) {
   };
   add(!result.valid, "the output is not a valid polygon mesh");
   add(!result.manifold, "non-manifold vertices remain");
-  add(result.holes.failed > 0, std::to_string(result.holes.failed) + " hole(s) could not be filled");
+  add(result.holes.failed > 0,
+      std::to_string(result.holes.failed) + " hole(s) could not be filled");
   add(result.holes_too_large > 0,
       std::to_string(result.holes_too_large) + " hole(s) larger than the size limit left open");
   add(!result.closed && result.holes.failed == 0 && result.holes_too_large == 0,
@@ -290,8 +294,8 @@ inline void list_remaining(Repair_result& result) {
 }
 
 template <class PolygonMesh, class VertexPointMap, class Visitor>
-Repair_result run_repair_pipeline(PolygonMesh& pm, VertexPointMap vpm, const Repair_options& options,
-                                  Visitor& visitor) {
+Repair_result run_repair_pipeline(PolygonMesh& pm, VertexPointMap vpm,
+                                  const Repair_options& options, Visitor& visitor) {
   Repair_result result;
   result.input_vertices = count_vertices(pm);
   result.input_faces = count_faces(pm);
