@@ -159,7 +159,7 @@ inline Soup cut_and_jitter(const Mesh& closed, int patch_count, double gap, unsi
       auto [it, inserted] = copy.emplace(std::make_pair(patch, v), soup.points.size());
       if (inserted) {
         Point p = closed.point(v);
-        if (patches_of_vertex[v].size() > 1) {
+        if (gap > 0 && patches_of_vertex[v].size() > 1) {  // gap 0: exact copies
           Vector direction(random.get_double(-1, 1), random.get_double(-1, 1),
                            random.get_double(-1, 1));
           const double length = std::sqrt(direction.squared_length());

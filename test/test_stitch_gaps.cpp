@@ -4,12 +4,15 @@
 
 #include <CGAL/Mesh_repair/remove_overlaps.h>
 #include <CGAL/Mesh_repair/stitch_gaps.h>
+#include <CGAL/Polygon_mesh_processing/stitch_borders.h>
 #include <CGAL/Polygon_mesh_processing/distance.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <map>
 
 namespace {
 using namespace stitch_test;
@@ -191,6 +194,131 @@ TEST(StitchGaps, QuadsToStitchDemoMeshLosesBorders) {
   EXPECT_TRUE(result.valid);
   EXPECT_LT(border_cycle_count(quads), borders_before);
   EXPECT_EQ(non_manifold_vertex_count(quads), 0u);
+}
+
+TEST(StitchGaps, CubeWithCoincidentAndNearSeamsIsClosedWithoutLosingFaces) {
+  // Five faces share their borders exactly (glued by CGAL's stitch_borders, then the nodes are
+  // collected again); the top face is lifted by 0.003, so its four seams are only near.
+  Soup soup = cube_of_separate_faces(0.0, {4, 4, 4, 4, 4, 4});
+  const std::size_t top_points = 5 * 5;
+  for (std::size_t i = soup.points.size() - top_points; i < soup.points.size(); ++i)
+    soup.points[i] = soup.points[i] + Vector(0, 0, 0.003);
+  Mesh cube = to_mesh(soup);
+  ASSERT_EQ(border_cycle_count(cube), 6u);
+  const std::size_t faces_before = cube.number_of_faces();
+  const MR::Stitch_result result = MR::stitch_gaps(cube, MR::parameters::merge_tolerance(0.01));
+  expect_closed_manifold_valid(cube, result);
+  EXPECT_GT(result.coincident_edges_stitched, 0u);
+  EXPECT_GT(result.node_merges, 0u);
+  EXPECT_EQ(result.border_edges_after, 0u);
+  EXPECT_EQ(cube.number_of_faces(), faces_before);
+  EXPECT_LE(result.max_displacement, 0.01);
+  EXPECT_FALSE(self_intersects(cube));
+}
+
+/// Pairs of border halfedges whose end points coincide in opposite directions, each halfedge in
+/// at most one pair (the input of a `stitch_borders(pm, pairs)` call).
+std::vector<std::pair<halfedge_descriptor, halfedge_descriptor>> coincident_border_pairs(
+    const Mesh& mesh) {
+  std::map<std::pair<Point, Point>, std::vector<halfedge_descriptor>> by_ends;
+  for (halfedge_descriptor h : halfedges(mesh))
+    if (is_border(h, mesh))
+      by_ends[{mesh.point(source(h, mesh)), mesh.point(target(h, mesh))}].push_back(h);
+  std::vector<std::pair<halfedge_descriptor, halfedge_descriptor>> pairs;
+  for (const auto& [ends, hs] : by_ends) {
+    if (!(ends.first < ends.second) || hs.size() != 1) continue;
+    auto other = by_ends.find({ends.second, ends.first});
+    if (other != by_ends.end() && other->second.size() == 1)
+      pairs.emplace_back(hs.front(), other->second.front());
+  }
+  return pairs;
+}
+
+/// Same elements, slot by slot (what CGAL's stitching and ours keep, link and remove).
+void expect_same_connectivity(const Mesh& a, const Mesh& b) {
+  ASSERT_EQ(a.number_of_vertices(), b.number_of_vertices());
+  ASSERT_EQ(a.number_of_halfedges(), b.number_of_halfedges());
+  ASSERT_EQ(a.number_of_faces(), b.number_of_faces());
+  for (halfedge_descriptor h : halfedges(a)) {
+    ASSERT_FALSE(b.is_removed(h));
+    EXPECT_EQ(a.target(h), b.target(h));
+    EXPECT_EQ(a.next(h), b.next(h));
+    EXPECT_EQ(a.face(h), b.face(h));
+  }
+  for (vertex_descriptor v : vertices(a)) {
+    ASSERT_FALSE(b.is_removed(v));
+    EXPECT_EQ(a.halfedge(v), b.halfedge(v));
+  }
+}
+
+TEST(GlueBorderPairs, GluesLikeCgalStitchBordersAndClosesTheMesh) {
+  Mesh sphere;
+  MR::make_sphere(sphere, Point(0, 0, 0), 1.0, 3);
+  for (unsigned seed : {1u, 2u}) {
+    // Gap 0: every patch has its own copies of the cut vertices, at the same places.
+    const Mesh pieces = to_mesh(cut_and_jitter(sphere, 7, 0.0, seed));
+    const auto pairs = coincident_border_pairs(pieces);
+    ASSERT_GT(pairs.size(), 20u);
+    Mesh ours = pieces, cgal = pieces;
+    EXPECT_EQ(MR::internal::glue_border_halfedge_pairs(ours, pairs), pairs.size());
+    EXPECT_EQ(PMP::stitch_borders(cgal, pairs), pairs.size());
+    expect_same_connectivity(ours, cgal);
+    EXPECT_TRUE(CGAL::is_valid_polygon_mesh(ours));
+    EXPECT_TRUE(CGAL::is_closed(ours));
+    EXPECT_EQ(non_manifold_vertex_count(ours), 0u);
+    EXPECT_EQ(ours.number_of_faces(), sphere.number_of_faces());
+    EXPECT_EQ(ours.number_of_vertices(), sphere.number_of_vertices());
+  }
+}
+
+TEST(GlueBorderPairs, RefusesAPairThatWouldDuplicateAnInteriorEdge) {
+  // A fan of three triangles around o. Gluing border edge v1-v2 to v2-v3 (a zip at v2) would
+  // merge v1 and v3, making the border edge o-v1 and the interior edge o-v3 one edge with three
+  // faces, and the vertex non-manifold: refused, as CGAL does; the mesh is left as it was.
+  Mesh fan;
+  const vertex_descriptor o = fan.add_vertex(Point(0, 0, 0));
+  std::vector<vertex_descriptor> v;
+  for (int k = 0; k < 4; ++k)
+    v.push_back(fan.add_vertex(Point(std::cos(0.5 * k), std::sin(0.5 * k), 0)));
+  for (int k = 0; k < 3; ++k) fan.add_face(o, v[k], v[k + 1]);
+  halfedge_descriptor v3_to_v2, v2_to_v1;
+  for (halfedge_descriptor h : halfedges(fan)) {
+    if (!is_border(h, fan)) continue;
+    if (source(h, fan) == v[2] && target(h, fan) == v[1]) v2_to_v1 = h;
+    if (source(h, fan) == v[3] && target(h, fan) == v[2]) v3_to_v2 = h;
+  }
+  const std::vector<std::pair<halfedge_descriptor, halfedge_descriptor>> pairs = {
+      {v3_to_v2, v2_to_v1}};
+  Mesh ours = fan, cgal = fan;
+  EXPECT_EQ(MR::internal::glue_border_halfedge_pairs(ours, pairs), 0u);
+  EXPECT_EQ(PMP::stitch_borders(cgal, pairs), 0u);
+  expect_same_connectivity(ours, fan);
+  expect_same_connectivity(ours, cgal);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(ours));
+  EXPECT_EQ(non_manifold_vertex_count(ours), 0u);
+  EXPECT_EQ(ours.number_of_faces(), 3u);
+  EXPECT_EQ(border_cycle_count(ours), 1u);
+}
+
+TEST(PointKdTree, FindsExactlyThePointsWithinTheRadius) {
+  CGAL::Random random(4);
+  std::vector<std::array<double, 3>> points;
+  for (int i = 0; i < 3000; ++i)
+    points.push_back({random.get_double(0, 10), random.get_double(0, 1), 0.5 * (i % 3)});
+  points.push_back(points[17]);  // a duplicate
+  const MR::internal::Point_kd_tree tree(points);
+  for (std::size_t q = 0; q < points.size(); q += 7) {
+    const double radius = 0.05 + 0.3 * double(q % 5);
+    std::vector<std::size_t> found, expected;
+    tree.for_each_within(points[q], radius, [&](std::size_t j, double) { found.push_back(j); });
+    for (std::size_t j = 0; j < points.size(); ++j) {
+      const double dx = points[j][0] - points[q][0], dy = points[j][1] - points[q][1],
+                   dz = points[j][2] - points[q][2];
+      if (dx * dx + dy * dy + dz * dz <= radius * radius) expected.push_back(j);
+    }
+    std::sort(found.begin(), found.end());
+    EXPECT_EQ(found, expected) << "query " << q;
+  }
 }
 
 TEST(RemoveOverlaps, DuplicatedFacesAreRemovedAndTheSphereStaysClosed) {

@@ -83,7 +83,9 @@ TEST(TJunctions, FoldedSeamNodesLandOnThePlanesIntersection) {
   EXPECT_GT(result.tangent_plane_merges, 0u);
   for (auto v : vertices(mesh)) {
     const Point& p = mesh.point(v);
-    if (p.x() < 1e-9 && std::abs(p.z()) < 0.004) EXPECT_NEAR(p.z(), 0.0, 1e-12) << p;
+    if (p.x() < 1e-9 && std::abs(p.z()) < 0.004) {
+      EXPECT_NEAR(p.z(), 0.0, 1e-12) << p;
+    }
   }
 }
 

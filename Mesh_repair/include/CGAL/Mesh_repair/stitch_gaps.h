@@ -28,8 +28,9 @@ namespace Mesh_repair {
 /// then border edges whose ends were merged are glued. Borders that coincide exactly are glued
 /// first with CGAL's `stitch_borders`.
 ///
-/// The mesh stays valid: only vertex moves, `CGAL::Euler::split_edge`/`split_face` and CGAL's
-/// `stitch_borders` change it. Nothing is merged farther apart than the tolerance.
+/// The mesh stays valid: only vertex moves, `CGAL::Euler::split_edge`/`split_face`, CGAL's
+/// `stitch_borders` and a linear-time equivalent of CGAL's `stitch_borders(pm, pairs)` (same
+/// checks, same result) change it. Nothing is merged farther apart than the tolerance.
 ///
 /// \tparam PolygonMesh a model of `MutableFaceGraph` and `FaceListGraph` (triangle faces along
 ///         the borders for T-junction splits)

@@ -9,18 +9,22 @@
 // create non-manifold vertices between two borders). Instead they are grouped in clusters, each
 // cluster's members are moved to one merge point, T-junction nodes are inserted with Euler
 // operations, and finally the border halfedges whose end clusters match in opposite directions
-// are glued with CGAL's `stitch_borders`, which merges the vertices along them.
+// are glued (glue_border_pairs.h: what CGAL's `stitch_borders(pm, pairs)` does, in linear time),
+// which merges the vertices along them.
+//
+// Every pass is linear or O(n log n) in the number of border nodes: the node pairs come from a
+// kd-tree (point_kd_tree.h), which also tells whether CGAL's search for exactly coincident
+// borders can find anything (see run()); clusters are linked lists over node ids, matching pairs
+// are bucketed by cluster, T-junctions found by box intersection.
 
 #include <CGAL/Mesh_repair/internal/cubic_curves.h>
+#include <CGAL/Mesh_repair/internal/stitching/glue_border_pairs.h>
 #include <CGAL/Mesh_repair/internal/stitching/merge_point.h>
+#include <CGAL/Mesh_repair/internal/stitching/point_kd_tree.h>
 #include <CGAL/Mesh_repair/internal/stitching/stitch_result.h>
 #include <CGAL/Mesh_repair/visitor.h>
 
 #include <CGAL/Box_intersection_d/Box_with_info_d.h>
-#include <CGAL/Kd_tree.h>
-#include <CGAL/Fuzzy_sphere.h>
-#include <CGAL/Search_traits_3.h>
-#include <CGAL/Search_traits_adapter.h>
 #include <CGAL/box_intersection_d.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -83,12 +87,23 @@ class Gap_stitcher {
 
   Stitch_result run() {
     result_.border_edges_before = count_border_edges();
-    visitor_.start_step("stitch coincident borders");
-    result_.coincident_edges_stitched = CGAL::Polygon_mesh_processing::stitch_borders(
-        pm_, CGAL::parameters::vertex_point_map(vpm_));
-    visitor_.end_step("stitch coincident borders");
     collect_border_nodes();
     if (!cancelled()) pair_nodes();
+    // Exactly coincident borders are glued by CGAL's `stitch_borders`, as if first: it needs two
+    // border nodes at one point (found by the pairing) or two edges joining the same border
+    // nodes (found while collecting them). Without either, its O(n log n) search over all border
+    // halfedges would glue nothing and is skipped; if it glues something, nodes and pairs are
+    // collected again on the glued mesh.
+    visitor_.start_step("stitch coincident borders");
+    if (coincident_possible_)
+      result_.coincident_edges_stitched = CGAL::Polygon_mesh_processing::stitch_borders(
+          pm_, CGAL::parameters::vertex_point_map(vpm_));
+    visitor_.end_step("stitch coincident borders");
+    if (result_.coincident_edges_stitched > 0) {
+      clear_nodes();
+      collect_border_nodes();
+      if (!cancelled()) pair_nodes();
+    }
     if (!cancelled()) place_clusters(false);
     for (int pass = 0;
          settings_.repair_t_junctions && pass < settings_.max_t_junction_passes && !cancelled();
@@ -121,8 +136,12 @@ class Gap_stitcher {
     node_normal_.push_back(normal);
     node_tolerance_.push_back(tolerance);
     parent_.push_back(node_vertex_.size() - 1);
-    cluster_members_.emplace_back();
+    next_member_.push_back(no_member);
+    last_member_.push_back(node_vertex_.size() - 1);
+    cluster_size_.push_back(1);
+    placed_.push_back(false);
     put(node_of_, v, node_vertex_.size());
+    matching_pairs_valid_ = false;
     return node_vertex_.size() - 1;
   }
 
@@ -131,25 +150,29 @@ class Gap_stitcher {
     return id;
   }
 
-  /// Members of the cluster rooted at `r`; a node alone is its own cluster.
-  const std::vector<std::size_t>& members(std::size_t r) {
-    if (cluster_members_[r].empty()) cluster_members_[r].push_back(r);
-    return cluster_members_[r];
+  /// Members of the cluster rooted at `r` into `out`, in the order they joined (a node alone is
+  /// its own cluster).
+  const std::vector<std::size_t>& members(std::size_t r, std::vector<std::size_t>& out) const {
+    out.clear();
+    for (std::size_t id = r; id != no_member; id = next_member_[id]) out.push_back(id);
+    return out;
   }
 
+  /// The members of `rb` join those of `ra` (a linked list per cluster: no allocation).
   void unite(std::size_t ra, std::size_t rb) {
-    members(ra);
-    const std::vector<std::size_t>& other = members(rb);
-    cluster_members_[ra].insert(cluster_members_[ra].end(), other.begin(), other.end());
-    std::vector<std::size_t>().swap(cluster_members_[rb]);
+    next_member_[last_member_[ra]] = rb;
+    last_member_[ra] = last_member_[rb];
+    cluster_size_[ra] += cluster_size_[rb];
     parent_[rb] = ra;
+    placed_[ra] = false;
+    matching_pairs_valid_ = false;
   }
 
   /// Roots of the clusters of two or more nodes.
   std::vector<std::size_t> cluster_roots() const {
     std::vector<std::size_t> roots;
     for (std::size_t id = 0; id < parent_.size(); ++id)
-      if (parent_[id] == id && cluster_members_[id].size() > 1) roots.push_back(id);
+      if (parent_[id] == id && cluster_size_[id] > 1) roots.push_back(id);
     return roots;
   }
 
@@ -170,8 +193,8 @@ class Gap_stitcher {
 
   /// Complete linkage: every pair of the joined cluster is within tolerance and of no common face.
   bool can_unite(std::size_t ra, std::size_t rb) {
-    for (std::size_t x : members(ra)) {
-      for (std::size_t y : members(rb)) {
+    for (std::size_t x : members(ra, members_a_)) {
+      for (std::size_t y : members(rb, members_b_)) {
         if (share_face(node_vertex_[x], node_vertex_[y])) {
           ++result_.rejected_same_face;
           return false;
@@ -187,8 +210,9 @@ class Gap_stitcher {
 
   // ---- step 1: border nodes, normals (eq. 4.1) and local tolerances -----------------------
 
-  Vec3 node_normal(vertex_descriptor v) const {
-    std::vector<std::pair<Vector, double>> weighted;
+  Vec3 node_normal(vertex_descriptor v) {
+    std::vector<std::pair<Vector, double>>& weighted = normal_scratch_;
+    weighted.clear();
     for (halfedge_descriptor h : halfedges_around_target(v, pm_)) {
       if (is_border(h, pm_)) continue;
       const Point& p = get(vpm_, v);
@@ -207,8 +231,34 @@ class Gap_stitcher {
     return {CGAL::to_double(n.x()), CGAL::to_double(n.y()), CGAL::to_double(n.z())};
   }
 
+  void clear_nodes() {
+    node_of_ = get(CGAL::dynamic_vertex_property_t<std::size_t>(), pm_);
+    for (auto* v : {&parent_, &next_member_, &last_member_, &cluster_size_}) v->clear();
+    node_vertex_.clear();
+    node_original_.clear();
+    node_normal_.clear();
+    node_tolerance_.clear();
+    placed_.clear();
+    placed_on_planes_.clear();
+    coincident_possible_ = false;
+    matching_pairs_valid_ = false;
+    result_.node_merges = result_.rejected_same_face = result_.rejected_too_far = 0;
+  }
+
+  /// Whether `h` (border, from u to v) is a degenerate or a multiple edge, or v ends another
+  /// border halfedge: configurations where CGAL's `stitch_borders` may glue without two border
+  /// vertices at one point.
+  bool unusual_border_halfedge(halfedge_descriptor h, std::vector<unsigned char>& ends_border) {
+    const vertex_descriptor u = source(h, pm_), v = target(h, pm_);
+    if (u == v || is_border(opposite(h, pm_), pm_)) return true;
+    for (halfedge_descriptor g : halfedges_around_target(v, pm_))
+      if (g != h && source(g, pm_) == u) return true;
+    return ends_border[node(v) - 1]++ > 0;
+  }
+
   void collect_border_nodes() {
     visitor_.start_step("border nodes");
+    std::vector<unsigned char> ends_border;
     const bool derived = settings_.merge_tolerance < 0;
     const double infinity = std::numeric_limits<double>::infinity();
     for (halfedge_descriptor h : halfedges(pm_)) {
@@ -217,13 +267,17 @@ class Gap_stitcher {
       const double local =
           settings_.default_tolerance_fraction * distance3(position(a), position(b));
       for (vertex_descriptor v : {a, b}) {
-        if (node(v) == no_node)
+        if (node(v) == no_node) {
           add_node(v, node_normal(v), derived ? infinity : settings_.merge_tolerance);
+          ends_border.push_back(0);
+        }
         if (derived) {
           double& tolerance = node_tolerance_[node(v) - 1];
           tolerance = std::min(tolerance, local);
         }
       }
+      if (!coincident_possible_ && unusual_border_halfedge(h, ends_border))
+        coincident_possible_ = true;
     }
     result_.border_nodes = node_vertex_.size();
     result_.tolerance_derived = derived;
@@ -242,38 +296,43 @@ class Gap_stitcher {
 
   void pair_nodes() {
     visitor_.start_step("pair border nodes");
-    using Base_traits = CGAL::Search_traits_3<GeomTraits>;
-    using Point_map = typename CGAL::Pointer_property_map<Point>::type;
-    using Traits = CGAL::Search_traits_adapter<std::size_t, Point_map, Base_traits>;
-    using Tree = CGAL::Kd_tree<Traits>;
-    using Sphere = CGAL::Fuzzy_sphere<Traits>;
-    std::vector<Point> points;
-    points.reserve(node_vertex_.size());
-    for (const Vec3& p : node_original_) points.emplace_back(p[0], p[1], p[2]);
-    Point_map point_map = CGAL::make_property_map(points);
-    std::vector<std::size_t> ids(points.size());
-    for (std::size_t i = 0; i < ids.size(); ++i) ids[i] = i;
-    Tree tree(ids.begin(), ids.end(), typename Tree::Splitter(), Traits(point_map));
-    tree.build();
-
-    std::vector<std::tuple<double, std::size_t, std::size_t>> candidates;
-    std::vector<std::size_t> found;
-    Progress_reporter<Visitor> report(visitor_, points.size());
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      if (!report(i)) return;
-      found.clear();
+    const Point_kd_tree tree(node_original_);
+    struct Candidate {
+      double distance;
+      std::size_t i, j;
+      bool same_face;  // the two nodes share a face (computed here, in spatial order)
+    };
+    std::vector<Candidate> candidates;
+    Progress_reporter<Visitor> report(visitor_, node_original_.size());
+    std::size_t done = 0;
+    // Queries in tree order, so consecutive queries visit the same tree nodes and mesh regions.
+    for (const Point_kd_tree::Item& item : tree.items()) {
+      if (!report(done++)) return;
+      const std::size_t i = item.id;
       const double radius = settings_.merge_nodes ? node_tolerance_[i] : 0.0;
-      tree.search(std::back_inserter(found), Sphere(points[i], radius, 0, tree.traits()));
-      for (std::size_t j : found) {
-        if (j <= i) continue;
+      tree.for_each_within(item.point, radius, [&](std::size_t j, double) {
+        if (j <= i) return;
         const double d = distance3(node_original_[i], node_original_[j]);
-        if (d <= pair_tolerance(i, j)) candidates.emplace_back(d, i, j);
-      }
+        if (d == 0) coincident_possible_ = true;  // two border nodes at one point
+        if (d <= pair_tolerance(i, j))
+          candidates.push_back({d, i, j, share_face(node_vertex_[i], node_vertex_[j])});
+      });
     }
-    std::sort(candidates.begin(), candidates.end());
-    for (const auto& [d, i, j] : candidates) {
-      const std::size_t ri = root(i), rj = root(j);
-      if (ri == rj || !can_unite(ri, rj)) continue;
+    std::sort(candidates.begin(), candidates.end(), [](const Candidate& x, const Candidate& y) {
+      return std::tie(x.distance, x.i, x.j) < std::tie(y.distance, y.i, y.j);
+    });
+    for (const Candidate& c : candidates) {
+      const std::size_t ri = root(c.i), rj = root(c.j);
+      if (ri == rj) continue;
+      if (cluster_size_[ri] == 1 && cluster_size_[rj] == 1) {
+        // can_unite() of two single nodes within tolerance: only the face test is left.
+        if (c.same_face) {
+          ++result_.rejected_same_face;
+          continue;
+        }
+      } else if (!can_unite(ri, rj)) {
+        continue;
+      }
       unite(ri, rj);
       ++result_.node_merges;
     }
@@ -283,22 +342,30 @@ class Gap_stitcher {
   // ---- step 3: every cluster moves to its merge point (thesis 4.2, Figure 4.2) ----------------
 
   void place_clusters(bool final_placement) {
+    placed_on_planes_.resize(node_vertex_.size());
     for (std::size_t r : cluster_roots()) {
-      const std::vector<std::size_t>& cluster = cluster_members_[r];
-      std::vector<Merge_node> merge_nodes;
-      double tolerance = std::numeric_limits<double>::infinity();
-      for (std::size_t id : cluster) {
-        merge_nodes.push_back({node_original_[id], node_normal_[id]});
-        tolerance = std::min(tolerance, node_tolerance_[id]);
+      // A cluster unchanged since its last placement stays there (its nodes' original positions
+      // and normals are fixed): only the final count is needed.
+      if (!placed_[r]) {
+        std::vector<Merge_node>& merge_nodes = merge_scratch_;
+        merge_nodes.clear();
+        double tolerance = std::numeric_limits<double>::infinity();
+        for (std::size_t id = r; id != no_member; id = next_member_[id]) {
+          merge_nodes.push_back({node_original_[id], node_normal_[id]});
+          tolerance = std::min(tolerance, node_tolerance_[id]);
+        }
+        bool used_planes = false;
+        const Vec3 target = merge_point(merge_nodes, tolerance, &used_planes);
+        for (std::size_t id = r; id != no_member; id = next_member_[id]) {
+          put(vpm_, node_vertex_[id], Point(target[0], target[1], target[2]));
+          result_.max_displacement =
+              std::max(result_.max_displacement, distance3(node_original_[id], target));
+        }
+        placed_[r] = true;
+        placed_on_planes_[r] = used_planes;
       }
-      bool used_planes = false;
-      const Vec3 target = merge_point(merge_nodes, tolerance, &used_planes);
-      if (final_placement) ++(used_planes ? result_.tangent_plane_merges : result_.midpoint_merges);
-      for (std::size_t id : cluster) {
-        put(vpm_, node_vertex_[id], Point(target[0], target[1], target[2]));
-        result_.max_displacement =
-            std::max(result_.max_displacement, distance3(node_original_[id], target));
-      }
+      if (final_placement)
+        ++(placed_on_planes_[r] ? result_.tangent_plane_merges : result_.midpoint_merges);
     }
   }
 
@@ -405,7 +472,7 @@ class Gap_stitcher {
     for (vertex_descriptor end : {source(h, pm_), target(h, pm_)}) {
       const std::size_t end_node = node(end);
       if (end_node != no_node && root(end_node - 1) == r) return false;
-      for (std::size_t member : members(r))
+      for (std::size_t member : members(r, members_a_))
         if (share_face(node_vertex_[member], end)) return false;
     }
     return true;
@@ -417,7 +484,7 @@ class Gap_stitcher {
     // their nodes) can take part in a T-junction, so the search scales with the defects.
     auto matched = get(CGAL::dynamic_halfedge_property_t<bool>(), pm_);
     for (halfedge_descriptor h : halfedges(pm_)) put(matched, h, false);
-    for (const auto& [h1, h2] : matching_border_pairs()) {
+    for (const auto& [h1, h2] : matching_border_pairs_cached()) {
       put(matched, h1, true);
       put(matched, h2, true);
     }
@@ -493,45 +560,68 @@ class Gap_stitcher {
 
   using Halfedge_pairs = std::vector<std::pair<halfedge_descriptor, halfedge_descriptor>>;
 
-  /// Border halfedges whose end clusters match exactly one border halfedge the other way.
+  /// Border halfedges whose end clusters match exactly one border halfedge the other way, in
+  /// increasing order of (lower, higher) end cluster root.
   Halfedge_pairs matching_border_pairs() {
     struct Entry {
-      std::size_t low, high;
+      std::size_t high;
       bool forward;
       halfedge_descriptor h;
     };
-    std::vector<Entry> entries;
+    // Bucketed by the lower root (counting sort over node ids), each bucket sorted by the higher.
+    std::vector<std::size_t> bucket_start(node_vertex_.size() + 1, 0);
+    std::vector<std::pair<std::size_t, Entry>> unsorted;
     for (halfedge_descriptor h : halfedges(pm_)) {
       if (!is_border(h, pm_)) continue;
       const std::size_t na = node(source(h, pm_)), nb = node(target(h, pm_));
       if (na == no_node || nb == no_node) continue;
       const std::size_t ra = root(na - 1), rb = root(nb - 1);
       if (ra == rb) continue;
-      entries.push_back({std::min(ra, rb), std::max(ra, rb), ra < rb, h});
+      unsorted.push_back({std::min(ra, rb), Entry{std::max(ra, rb), ra < rb, h}});
+      ++bucket_start[std::min(ra, rb) + 1];
     }
-    std::sort(entries.begin(), entries.end(), [](const Entry& x, const Entry& y) {
-      return std::tie(x.low, x.high, x.forward) < std::tie(y.low, y.high, y.forward);
-    });
+    for (std::size_t k = 0; k + 1 < bucket_start.size(); ++k)
+      bucket_start[k + 1] += bucket_start[k];
+    std::vector<Entry> entries(unsorted.size());
+    {
+      std::vector<std::size_t> fill(bucket_start.begin(), bucket_start.end() - 1);
+      for (const auto& [low, entry] : unsorted) entries[fill[low]++] = entry;
+    }
+    std::vector<std::pair<std::size_t, Entry>>().swap(unsorted);
     Halfedge_pairs pairs;
-    for (std::size_t begin = 0; begin < entries.size();) {
-      std::size_t end = begin;
-      while (end < entries.size() && entries[end].low == entries[begin].low &&
-             entries[end].high == entries[begin].high)
-        ++end;
-      // Exactly one halfedge each way: gluing more would create a non-manifold edge.
-      if (end - begin == 2 && entries[begin].forward != entries[begin + 1].forward)
-        pairs.emplace_back(entries[begin].h, entries[begin + 1].h);
-      begin = end;
+    for (std::size_t low = 0; low + 1 < bucket_start.size(); ++low) {
+      const auto first = entries.begin() + bucket_start[low],
+                 last = entries.begin() + bucket_start[low + 1];
+      if (last - first < 2) continue;
+      std::sort(first, last, [](const Entry& x, const Entry& y) {
+        return std::tie(x.high, x.forward) < std::tie(y.high, y.forward);
+      });
+      for (auto begin = first; begin != last;) {
+        auto end = begin;
+        while (end != last && end->high == begin->high) ++end;
+        // Exactly one halfedge each way: gluing more would create a non-manifold edge.
+        if (end - begin == 2 && begin->forward != (begin + 1)->forward)
+          pairs.emplace_back(begin->h, (begin + 1)->h);
+        begin = end;
+      }
     }
     return pairs;
   }
 
+  /// matching_border_pairs(), reused while no cluster or border halfedge changed.
+  const Halfedge_pairs& matching_border_pairs_cached() {
+    if (!matching_pairs_valid_) {
+      matching_pairs_ = matching_border_pairs();
+      matching_pairs_valid_ = true;
+    }
+    return matching_pairs_;
+  }
+
   void stitch_clusters() {
     visitor_.start_step("stitch merged nodes");
-    const Halfedge_pairs to_stitch = matching_border_pairs();
+    const Halfedge_pairs to_stitch = matching_border_pairs_cached();
     count_unstitched_clusters(to_stitch);
-    result_.edges_stitched = CGAL::Polygon_mesh_processing::stitch_borders(
-        pm_, to_stitch, CGAL::parameters::vertex_point_map(vpm_));
+    result_.edges_stitched = glue_border_halfedge_pairs(pm_, to_stitch);
     visitor_.end_step("stitch merged nodes");
   }
 
@@ -552,7 +642,7 @@ class Gap_stitcher {
       join(target(h1, pm_), source(h2, pm_));
     }
     for (std::size_t r : cluster_roots()) {
-      for (std::size_t id : cluster_members_[r]) {
+      for (std::size_t id = r; id != no_member; id = next_member_[id]) {
         if (find(id) != find(r)) {
           ++result_.unstitched_clusters;
           break;
@@ -581,8 +671,19 @@ class Gap_stitcher {
   std::vector<vertex_descriptor> node_vertex_;
   std::vector<Vec3> node_original_, node_normal_;
   std::vector<double> node_tolerance_;
+  static constexpr std::size_t no_member = std::numeric_limits<std::size_t>::max();
   std::vector<std::size_t> parent_;
-  std::vector<std::vector<std::size_t>> cluster_members_;  // at roots; empty: a single node
+  std::vector<std::size_t> next_member_;  // the cluster of a root, as a list from the root
+  std::vector<std::size_t> last_member_, cluster_size_;  // at roots
+  // At roots: whether the cluster is unchanged since its last placement, and how it was placed.
+  std::vector<bool> placed_;
+  std::vector<bool> placed_on_planes_;
+  std::vector<std::size_t> members_a_, members_b_;
+  std::vector<std::pair<Vector, double>> normal_scratch_;
+  std::vector<Merge_node> merge_scratch_;
+  bool coincident_possible_ = false;  // see run()
+  Halfedge_pairs matching_pairs_;
+  bool matching_pairs_valid_ = false;
   bool cancelled_ = false;
   Stitch_result result_;
 };
