@@ -12,8 +12,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
+#include <vector>
 
 namespace {
 
@@ -175,6 +177,106 @@ TEST(TrianglesToQuads, QuadSmoothingRaisesMeanBetaAndKeepsPlane) {
   EXPECT_GT(result.mean_quality_after, result.mean_quality_before);
   EXPECT_GT(result.worst_quality_after, 0.0);
   for (auto v : vertices(mesh)) EXPECT_EQ(mesh.point(v).z(), 0.0);
+}
+
+// A 6 x 6 grid of unit quads in the plane z = 0 whose central quad (2,2)-(3,3) is squashed
+// along its diagonal: its corners (2,2) and (3,3) are pulled to (2.45,2.45) and (2.55,2.55).
+Mesh grid_with_squashed_quad(std::vector<Mesh::Vertex_index>& vertex) {
+  Mesh mesh;
+  const int n = 6;
+  vertex.clear();
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) vertex.push_back(mesh.add_vertex(Point(i, j, 0)));
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int a = j * (n + 1) + i;
+      mesh.add_face(vertex[a], vertex[a + 1], vertex[a + n + 2], vertex[a + n + 1]);
+    }
+  mesh.point(vertex[3 * (n + 1) + 3]) = Point(2.55, 2.55, 0);
+  mesh.point(vertex[2 * (n + 1) + 2]) = Point(2.45, 2.45, 0);
+  return mesh;
+}
+
+double worst_beta(const Mesh& mesh) {
+  double worst = 1;
+  for (auto f : faces(mesh)) {
+    std::vector<Point> c;
+    for (auto v : vertices_around_face(halfedge(f, mesh), mesh)) c.push_back(mesh.point(v));
+    worst = std::min(
+        worst, c.size() == 4 ? MR::quad_beta(c[0], c[1], c[2], c[3]) : MR::alpha(c[0], c[1], c[2]));
+  }
+  return worst;
+}
+
+TEST(TrianglesToQuads, ElementCollapseRemovesASquashedQuadAndRaisesTheWorstBeta) {
+  std::vector<Mesh::Vertex_index> vertex;
+  Mesh mesh = grid_with_squashed_quad(vertex);
+  const double before = worst_beta(mesh);
+  ASSERT_LT(before, 0.2);  // the squashed quad
+  const auto result = MR::triangles_to_quads(mesh);
+  EXPECT_EQ(result.collapsed_elements, 1u);
+  EXPECT_EQ(result.quads, 35u);
+  EXPECT_EQ(mesh.number_of_faces(), 35u);
+  EXPECT_EQ(mesh.number_of_vertices(), 48u);  // the two ends of the diagonal became one node
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  EXPECT_GT(worst_beta(mesh), before + 0.2);
+  // Every element keeps its upward orientation (exact test) and stays convex.
+  for (auto f : faces(mesh)) {
+    std::vector<Point> c;
+    for (auto v : vertices_around_face(halfedge(f, mesh), mesh)) c.push_back(mesh.point(v));
+    ASSERT_EQ(c.size(), 4u);
+    for (int i = 0; i < 4; ++i)
+      EXPECT_EQ(CGAL::orientation(Kernel::Point_2(c[i].x(), c[i].y()),
+                                  Kernel::Point_2(c[(i + 1) % 4].x(), c[(i + 1) % 4].y()),
+                                  Kernel::Point_2(c[(i + 2) % 4].x(), c[(i + 2) % 4].y())),
+                CGAL::LEFT_TURN);
+  }
+  // The merged node sits at the midpoint of the old diagonal.
+  bool found = false;
+  for (auto v : vertices(mesh)) found = found || mesh.point(v) == Point(2.5, 2.5, 0);
+  EXPECT_TRUE(found);
+}
+
+TEST(TrianglesToQuads, ElementCollapseLeavesGoodQuadsAndBordersAlone) {
+  std::vector<Mesh::Vertex_index> vertex;
+  Mesh mesh = grid_with_squashed_quad(vertex);
+  // Squash a border quad instead: its diagonal ends are on the border, so it must stay.
+  mesh.point(vertex[3 * 7 + 3]) = Point(3, 3, 0);
+  mesh.point(vertex[2 * 7 + 2]) = Point(2, 2, 0);
+  mesh.point(vertex[0]) = Point(0.45, 0.45, 0);
+  mesh.point(vertex[8]) = Point(0.55, 0.55, 0);
+  const auto result = MR::triangles_to_quads(mesh);
+  EXPECT_EQ(result.collapsed_elements, 0u);
+  EXPECT_EQ(mesh.number_of_faces(), 36u);
+  // A regular grid has no poor quad: nothing collapses.
+  Mesh regular;
+  MR::make_height_field<Mesh, Point>(regular, 0, 1, 0, 1, 8, 8, [](double, double) { return 0.0; });
+  EXPECT_EQ(MR::triangles_to_quads(regular).collapsed_elements, 0u);
+}
+
+TEST(TrianglesToQuads, ElementCollapseRefusesAFold) {
+  // The squashed quad's other corners are moved to (2.66, 2.08) and (2.29, 3.16): every element
+  // is still convex, but with either diagonal collapsed to its midpoint or to either end, some
+  // element around it would turn reflex or fold. No collapse may happen.
+  std::vector<Mesh::Vertex_index> vertex;
+  Mesh mesh = grid_with_squashed_quad(vertex);
+  mesh.point(vertex[2 * 7 + 3]) = Point(2.66, 2.08, 0);
+  mesh.point(vertex[3 * 7 + 2]) = Point(2.29, 3.16, 0);
+  ASSERT_LT(worst_beta(mesh), 0.3);
+  const auto result = MR::triangles_to_quads(mesh);
+  EXPECT_EQ(result.collapsed_elements, 0u);
+  EXPECT_EQ(mesh.number_of_vertices(), 49u);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  for (auto f : faces(mesh)) {
+    std::vector<Point> c;
+    for (auto v : vertices_around_face(halfedge(f, mesh), mesh)) c.push_back(mesh.point(v));
+    for (std::size_t i = 0; i < c.size(); ++i)
+      EXPECT_EQ(
+          CGAL::orientation(Kernel::Point_2(c[i].x(), c[i].y()),
+                            Kernel::Point_2(c[(i + 1) % c.size()].x(), c[(i + 1) % c.size()].y()),
+                            Kernel::Point_2(c[(i + 2) % c.size()].x(), c[(i + 2) % c.size()].y())),
+          CGAL::LEFT_TURN);
+  }
 }
 
 TEST(FlipEdgesForQuality, WorstAlphaOfAJitteredPlaneDoesNotDecrease) {

@@ -177,6 +177,7 @@ int run_smooth(const std::vector<std::string>& args) {
       json.field("seconds", conversion_seconds).field("merged_pairs", conversion.merged_pairs);
       json.field("eliminated_nodes", conversion.eliminated_nodes);
       json.field("swapped_edges", conversion.swapped_edges);
+      json.field("collapsed_elements", conversion.collapsed_elements);
       json.field("remaining_triangles", conversion.remaining_triangles);
       json.end_object();
     }

@@ -129,8 +129,10 @@ Mga_smooth_result smooth_with(PolygonMesh& pm, const NamedParameters& np,
   std::vector<bool> fixed(mesh.points.size(), false);
   std::vector<std::vector<int>> big_faces;
   Mga_smooth_result result;
+  std::vector<int> polygon;
+  mesh.faces.reserve(num_faces(pm));
   for (auto f : faces(pm)) {
-    std::vector<int> polygon;
+    polygon.clear();
     for (vertex_descriptor v : vertices_around_face(halfedge(f, pm), pm))
       polygon.push_back(int(get(index, v)));
     if (polygon.size() == 3 || polygon.size() == 4) {

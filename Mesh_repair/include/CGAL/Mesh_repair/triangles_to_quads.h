@@ -5,9 +5,9 @@
 
 /// \file triangles_to_quads.h
 /// Topological operators of Chen, Hsu, Lin 2.1: the conversion of a triangle mesh into a quad
-/// mesh by merging adjacent triangle pairs (best pairs first), the quad clean-up operators (node
-/// elimination and edge swap) applied where they raise quality, and quality edge
-/// flips that clean a primary triangulation. See doc/mga_smooth.md.
+/// mesh by merging adjacent triangle pairs (best pairs first), the quad clean-up operators
+/// (element collapse, node elimination and edge swap) applied where they raise quality, and quality
+/// edge flips that clean a primary triangulation. See doc/mga_smooth.md.
 
 #include <CGAL/Mesh_repair/internal/c1_surface/vec3.h>
 #include <CGAL/Mesh_repair/parameters.h>
@@ -35,6 +35,7 @@ struct Quad_conversion_result {
   std::size_t quads = 0;                ///< quads in the final mesh
   std::size_t eliminated_nodes = 0;     ///< interior nodes of valence 2 removed
   std::size_t swapped_edges = 0;        ///< quad-quad edges swapped to a better hexagon split
+  std::size_t collapsed_elements = 0;   ///< poor quads collapsed along a diagonal
 };
 
 /// What `flip_edges_for_quality` did.
@@ -165,6 +166,47 @@ class Topology_cleaner {
     return removed;
   }
 
+  // Element collapse (Chen et al. 2.1, after Canann et al.): a poor quad (a, b, c, d) with a short
+  // diagonal a-c is removed by merging a and c into one node m; the edges a-b and c-b
+  // become one edge, as do a-d and c-d. Done only when every element around a and c keeps its
+  // orientation and stays convex (exact orientation tests), no element or edge would be doubled
+  // (a and c share no neighbour but b and d and no element but the quad), and the worst quality of
+  // the elements around a and c rises. m is the diagonal's midpoint, a or c, whichever is best.
+  std::size_t collapse_poor_quads(double max_beta) {
+    std::vector<std::pair<double, face_descriptor>> candidates;
+    for (face_descriptor f : faces(pm_)) {
+      if (degree(f, pm_) != 4) continue;
+      const double beta = quality(ring(halfedge(f, pm_)));
+      if (beta < max_beta) candidates.emplace_back(beta, f);
+    }
+    std::stable_sort(candidates.begin(), candidates.end(),
+                     [](const auto& x, const auto& y) { return x.first < y.first; });
+    // A collapse removes its quad and two triangles of its own split; the faces around keep
+    // their descriptors (CGAL's join_face keeps the neighbour), so later candidates stay valid.
+    std::size_t collapsed = 0;
+    for (const auto& candidate : candidates) {
+      const face_descriptor f = candidate.second;
+      if (degree(f, pm_) != 4) continue;  // an earlier collapse changed it
+      // The two diagonals: h_a = halfedge of f whose target is a, its diagonal partner c is the
+      // target of next(next(h_a)).
+      Plan best;
+      halfedge_descriptor h = halfedge(f, pm_);
+      for (int diagonal = 0; diagonal < 2; ++diagonal, h = next(h, pm_)) {
+        const Plan plan = plan_collapse(h);
+        if (plan.gain > best.gain) best = plan;
+      }
+      if (!(best.gain > 0)) continue;
+      // Remove the quad: split it along a-c, then collapse the new edge (CGAL's collapse_edge
+      // joins each of the two triangles with its neighbour across a-b and a-d and merges a
+      // into c).
+      const halfedge_descriptor ac = CGAL::Euler::split_face(best.to_a, best.to_c, pm_);
+      const vertex_descriptor kept = CGAL::Euler::collapse_edge(edge(ac, pm_), pm_);
+      put(vpm_, kept, best.position);
+      ++collapsed;
+    }
+    return collapsed;
+  }
+
   // Edge swap (Canann et al., Kinney): two quads sharing an edge form a hexagon, which has three
   // splits into two quads; the one with the best worst beta is kept.
   std::size_t swap_quad_edges() {
@@ -244,6 +286,102 @@ class Topology_cleaner {
     return {flips, rejected};
   }
 
+  struct Plan {
+    double gain = 0;  // worst quality after minus before
+    halfedge_descriptor to_a, to_c;
+    Point position;
+  };
+
+  // Checks and scores the collapse of the diagonal from a = target(h) to c = target(next(next(h)))
+  // of the quad of h.
+  Plan plan_collapse(halfedge_descriptor h) const {
+    Plan plan;
+    const halfedge_descriptor to_b = next(h, pm_), to_c = next(to_b, pm_), to_d = next(to_c, pm_);
+    const vertex_descriptor a = target(h, pm_), b = target(to_b, pm_), c = target(to_c, pm_),
+                            d = target(to_d, pm_);
+    // Only a short diagonal is collapsed (at most 0.4 of the other): collapsing a diagonal of a
+    // long thin quad would move its ends far.
+    if (!(length(point(a) - point(c)) <= 0.4 * length(point(b) - point(d)))) return plan;
+    // Interior quad, b and d keep at least three edges, a and c on no feature or border edge.
+    for (halfedge_descriptor k : {h, to_b, to_c, to_d})
+      if (is_border(opposite(k, pm_), pm_)) return plan;
+    if (is_border(a, pm_) || is_border(c, pm_) || is_border(b, pm_) || is_border(d, pm_))
+      return plan;
+    if (degree(b, pm_) < 4 || degree(d, pm_) < 4) return plan;
+    for (vertex_descriptor v : {a, c})
+      for (halfedge_descriptor k : halfedges_around_target(v, pm_))
+        if (is_feature(k)) return plan;
+    // The faces across a-b and b-c (and across c-d and d-a) must differ, or b (d) would end in a
+    // doubled edge.
+    if (face(opposite(to_b, pm_), pm_) == face(opposite(to_c, pm_), pm_) ||
+        face(opposite(to_d, pm_), pm_) == face(opposite(h, pm_), pm_))
+      return plan;
+    // a and c: no edge, no common element but the quad, no common neighbour but b and d.
+    const face_descriptor quad = face(h, pm_);
+    std::vector<vertex_descriptor> neighbours_of_a;
+    for (vertex_descriptor n : vertices_around_target(a, pm_)) neighbours_of_a.push_back(n);
+    for (vertex_descriptor n : vertices_around_target(c, pm_)) {
+      if (n == a) return plan;
+      if (n != b && n != d &&
+          std::find(neighbours_of_a.begin(), neighbours_of_a.end(), n) != neighbours_of_a.end())
+        return plan;
+    }
+    std::vector<face_descriptor> around;  // the elements around a and c, but the quad
+    for (vertex_descriptor v : {a, c})
+      for (face_descriptor g : faces_around_target(halfedge(v, pm_), pm_))
+        if (g != quad) {
+          if (std::find(around.begin(), around.end(), g) != around.end()) return plan;
+          around.push_back(g);
+        }
+    // Worst quality before (the quad included), and each element's reference normal.
+    double before = quality(ring(h));
+    std::vector<std::vector<vertex_descriptor>> rings;
+    std::vector<Vec3> normals;
+    for (face_descriptor g : around) {
+      rings.push_back(ring(halfedge(g, pm_)));
+      normals.push_back(face_normal(halfedge(g, pm_)));
+      before = std::min(before, quality(rings.back()));
+    }
+    const Vec3 pa = point(a), pc = point(c);
+    const Vec3 options[3] = {0.5 * (pa + pc), pa, pc};
+    for (const Vec3& option : options) {
+      const Point m(option[0], option[1], option[2]);
+      double after = 1;
+      bool valid = true;
+      for (std::size_t i = 0; i < rings.size() && valid; ++i) {
+        std::vector<Point> corners;
+        for (vertex_descriptor v : rings[i]) corners.push_back(v == a || v == c ? m : get(vpm_, v));
+        valid = oriented_like(corners, normals[i]);
+        if (valid) after = std::min(after, quality_of(corners));
+      }
+      if (valid && after - before > plan.gain) {
+        plan.gain = after - before;
+        plan.to_a = h, plan.to_c = to_c;
+        plan.position = m;
+      }
+    }
+    return plan;
+  }
+
+  static double quality_of(const std::vector<Point>& c) {
+    if (c.size() == 3) return alpha(c[0], c[1], c[2]);
+    if (c.size() == 4) return quad_beta(c[0], c[1], c[2], c[3]);
+    return 0;
+  }
+
+  // Exact test on explicit corner positions: every corner triangle is oriented like `normal`.
+  static bool oriented_like(const std::vector<Point>& r, const Vec3& normal) {
+    const std::size_t n = r.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const Point &a = r[i], &b = r[(i + 1) % n], &c = r[(i + n - 1) % n];
+      const Point tip(CGAL::to_double(a.x()) + normal[0], CGAL::to_double(a.y()) + normal[1],
+                      CGAL::to_double(a.z()) + normal[2]);
+      if (GT().orientation_3_object()(a, b, c, tip) != CGAL::POSITIVE) return false;
+      if (n == 3) break;
+    }
+    return true;
+  }
+
  private:
   PolygonMesh& pm_;
   VertexPointMap vpm_;
@@ -256,7 +394,10 @@ class Topology_cleaner {
 /// are merged greedily, the pair whose quad has the best beta (eq. 7) first; edges whose dihedral
 /// angle is below `feature_angle_deg`, and pairs whose quad would be non-convex or fold (exact
 /// orientation test), are never merged. Then the clean-up operators run where they raise quality:
-/// node elimination (interior nodes of two quads) and edge swap (best split of the hexagon of two
+/// element collapse (a quad of beta < 0.3 with a short diagonal, at most 0.4 of the other, loses
+/// that diagonal: its two ends merge, when no element folds or turns non-convex (exact orientation
+/// tests), no edge or element would be doubled, and the worst quality around rises), node
+/// elimination (interior nodes of two quads) and edge swap (best split of the hexagon of two
 /// quads). Triangles without a partner
 /// stay. The mesh stays valid.
 ///
@@ -279,6 +420,7 @@ Quad_conversion_result triangles_to_quads(
   internal::Topology_cleaner<PolygonMesh, decltype(vpm)> cleaner(pm, vpm, feature_angle_deg);
   Quad_conversion_result result;
   result.merged_pairs = cleaner.merge_pairs(0.05);
+  result.collapsed_elements = cleaner.collapse_poor_quads(0.3);
   result.eliminated_nodes = cleaner.eliminate_valence_two_nodes();
   result.swapped_edges = cleaner.swap_quad_edges();
   for (auto f : faces(pm)) {

@@ -215,22 +215,31 @@ class Cubic_surface {
   // the area-weighted normal; the fitted gradient tilts that normal.
   Vec3 fitted_normal(int v) const {
     Vec3 first;
-    std::set<int> ring;
+    // The ring as a sorted vector (the order of a std::set, without its allocations per node).
+    static thread_local std::vector<int> ring;
+    ring.clear();
+    auto sort_unique = [] {
+      std::sort(ring.begin(), ring.end());
+      ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
+    };
     for (int t : incident_[v]) {
       first += face_area_[t] * face_normal_[t];
-      for (int c : triangles_[t]) ring.insert(c);
+      for (int c : triangles_[t]) ring.push_back(c);
     }
+    sort_unique();
     first = normalized(first);
     if (ring.size() < 6) {
-      const std::set<int> one_ring = ring;
-      for (int n : one_ring)
-        for (int t : incident_[n])
-          for (int c : triangles_[t]) ring.insert(c);
+      const std::size_t one_ring = ring.size();
+      for (std::size_t i = 0; i < one_ring; ++i)
+        for (int t : incident_[ring[i]])
+          for (int c : triangles_[t]) ring.push_back(c);
+      sort_unique();
     }
-    ring.erase(v);
+    ring.erase(std::lower_bound(ring.begin(), ring.end(), v));
     Vec3 t1, t2;
     tangent_frame(first, t1, t2);
-    std::vector<Height_sample> samples;
+    static thread_local std::vector<Height_sample> samples;
+    samples.clear();
     for (int n : ring) {
       const Vec3 d = points_[n] - points_[v];
       samples.push_back({dot(d, t1), dot(d, t2), dot(d, first)});
@@ -265,12 +274,13 @@ class Cubic_surface {
   // What the barycentric coordinates of a point projected on a triangle's plane need, computed
   // once: the walk evaluates them millions of times.
   struct Plane_frame {
-    Vec3 e1, e2;
+    Vec3 origin, e1, e2;
     double d00 = 0, d01 = 0, d11 = 0, inverse_denominator = 0;
   };
 
   Plane_frame plane_frame(int t) const {
     Plane_frame f;
+    f.origin = point(t, 0);
     f.e1 = point(t, 1) - point(t, 0), f.e2 = point(t, 2) - point(t, 0);
     f.d00 = dot(f.e1, f.e1), f.d01 = dot(f.e1, f.e2), f.d11 = dot(f.e2, f.e2);
     const double denominator = f.d00 * f.d11 - f.d01 * f.d01;
@@ -284,7 +294,7 @@ class Cubic_surface {
       b[0] = 1, b[1] = b[2] = 0;
       return;
     }
-    const Vec3 d = p - point(t, 0);
+    const Vec3 d = p - f.origin;
     const double d20 = dot(d, f.e1), d21 = dot(d, f.e2);
     b[1] = (f.d11 * d20 - f.d01 * d21) * f.inverse_denominator;
     b[2] = (f.d00 * d21 - f.d01 * d20) * f.inverse_denominator;

@@ -90,9 +90,23 @@ std::array<double, 3> run_micro_ga(const Fitness& fitness, const Micro_ga_settin
   };
   std::array<std::uint32_t, max_population> population{};
   std::array<double, max_population> score{};
+  // Strings already evaluated in this run: crossover of equal parents and restarts reproduce
+  // strings often, and the fitness is a pure function of the string, so a repeated string reuses
+  // its score (same result, fewer surface projections).
+  constexpr int memo_capacity = 64;
+  std::array<std::uint32_t, memo_capacity> seen;
+  std::array<double, memo_capacity> seen_score;
+  int seen_count = 0;
   auto evaluate = [&](int i) {
-    const auto r = decode(population[i]);
+    const std::uint32_t string = population[i];
+    for (int k = 0; k < seen_count; ++k)
+      if (seen[k] == string) {
+        score[i] = seen_score[k];
+        return;
+      }
+    const auto r = decode(string);
     score[i] = fitness(r[0], r[1]);
+    if (seen_count < memo_capacity) seen[seen_count] = string, seen_score[seen_count++] = score[i];
   };
   for (int i = 0; i < size; ++i) {
     population[i] = std::uint32_t(random.next()) & mask;

@@ -26,6 +26,7 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <memory>
 #include <vector>
 
 namespace CGAL {
@@ -87,6 +88,11 @@ class Node_smoother {
       host_[v] = v < surface.number_of_vertices() ? surface.triangle_of_vertex(int(v)) : -1;
     classes_ = independent_sets(mesh, fixed);
     stale_.assign(mesh.points.size(), 1);
+#ifdef CGAL_LINKED_WITH_TBB
+    // One arena for all colour classes and sweeps (creating one per class costs thread start-up
+    // and hand-over each time).
+    if (settings.threads > 1) arena_ = std::make_unique<tbb::task_arena>(settings.threads);
+#endif
   }
 
   /// Runs the sweeps; `progress(fraction)` returns false to cancel between colour classes.
@@ -134,11 +140,10 @@ class Node_smoother {
         if (stale_[nodes[i]]) moves[i] = smooth_node(nodes[i], sweep);
     };
 #ifdef CGAL_LINKED_WITH_TBB
-    if (settings_.threads > 1 && nodes.size() > 64) {
-      tbb::task_arena arena(settings_.threads);
-      arena.execute([&] {
+    if (arena_ && nodes.size() > 64) {
+      arena_->execute([&] {
         tbb::parallel_for(
-            tbb::blocked_range<std::size_t>(0, nodes.size(), 64),
+            tbb::blocked_range<std::size_t>(0, nodes.size(), 32),
             [&](const tbb::blocked_range<std::size_t>& r) { body(r.begin(), r.end()); });
       });
     } else {
@@ -197,22 +202,33 @@ class Node_smoother {
   // Steps 3-7: one micro-GA per adjacent element; the best over the elements wins.
   double micro_ga_search(const Node_star& star, Splitmix64& random, Vec3& best_position) const {
     double best = -1;
+    std::size_t best_element = 0;
+    double best_r1 = 0, best_r2 = 0;
     const int start = host_[star.node()];
+    Vec3 v1, v2, v3;
+    int hint = start;  // the walk starts where the previous trial of this element was found
+    auto position = [&](double r1, double r2) {  // eq. 3
+      return surface_.project((1 - r2) * v1 + (r2 * (1 - r1)) * v2 + (r1 * r2) * v3, hint);
+    };
     for (std::size_t e = 0; e < star.elements().size(); ++e) {
-      Vec3 v1, v2, v3;
       star.search_triangle(e, v1, v2, v3);
-      auto position = [&](double r1, double r2) {  // eq. 3
-        return on_surface((1 - r2) * v1 + (r2 * (1 - r1)) * v2 + (r1 * r2) * v3, start);
-      };
+      hint = start;
       const auto result =
           run_micro_ga([&](double r1, double r2) { return star.fitness(position(r1, r2)); },
                        settings_.ga, random);
       if (result[0] > best) {
         best = result[0];
-        best_position = position(result[1], result[2]);
+        best_element = e, best_r1 = result[1], best_r2 = result[2];
       }
     }
-    return best;
+    // Only the winner's point is mapped again, from the node's host; its fitness is taken again
+    // so that the gain belongs to exactly that point (a walk from another start can end in the
+    // neighbouring patch when the point lies on a patch edge).
+    if (best < 0) return best;
+    star.search_triangle(best_element, v1, v2, v3);
+    hint = start;
+    best_position = position(best_r1, best_r2);
+    return star.fitness(best_position);
   }
 
   // The paper's baseline (Garimella et al.): Polak-Ribiere conjugate gradient on the fitness
@@ -277,6 +293,9 @@ class Node_smoother {
   std::vector<int> host_;
   std::vector<char> stale_;
   std::vector<std::vector<int>> classes_;
+#ifdef CGAL_LINKED_WITH_TBB
+  std::unique_ptr<tbb::task_arena> arena_;
+#endif
 };
 
 }  // namespace internal

@@ -11,7 +11,12 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <vector>
+
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
 
 namespace CGAL {
 namespace Mesh_repair {
@@ -51,9 +56,27 @@ class Node_star {
     std::array<int, 4> ring;  // ring[0] is the node
     Vec3 reference_normal;    // normal before the move: a move that flips it is a fold
     Vec3 corners[4];          // positions of ring[1..degree-1] (fixed while the node moves)
+    Vec3 fixed_edge;          // corners[2] - corners[1]
+    double fixed_edge_squared = 0;
+  };
+
+  /// The elements of a star (a view of a per-thread buffer, valid until the next star is built
+  /// on this thread).
+  struct Elements {
+    const Element* first;
+    std::size_t count;
+    const Element* begin() const { return first; }
+    const Element* end() const { return first + count; }
+    std::size_t size() const { return count; }
+    bool empty() const { return count == 0; }
+    const Element& operator[](std::size_t i) const { return first[i]; }
   };
 
   Node_star(const Polygon_arrays& mesh, int node) : mesh_(mesh), node_(node) {
+    // The star is built once per node and search: reuse this thread's buffer (no allocation per
+    // node once the largest valence has been seen).
+    static thread_local std::vector<Element> buffer;
+    buffer.clear();
     for (int k = mesh.incidence_start[node]; k < mesh.incidence_start[node + 1]; ++k) {
       const int f = mesh.incidence[k];
       Element element;
@@ -64,12 +87,35 @@ class Node_star {
         element.ring[i] = mesh.faces[f][(first + i) % element.degree];
       element.reference_normal = newell_normal(element, mesh.points[node]);
       for (int i = 1; i < element.degree; ++i) element.corners[i] = mesh.points[element.ring[i]];
-      elements_.push_back(element);
+      // Triangle: |V2 - V3|^2 does not depend on the node (eq. 4's denominator).
+      element.fixed_edge = element.corners[2] - element.corners[1];
+      element.fixed_edge_squared = dot(element.fixed_edge, element.fixed_edge);
+      buffer.push_back(element);
+    }
+    elements_ = buffer.data();
+    size_ = buffer.size();
+    // All-triangle stars (the usual case) are also laid out by coordinate, two elements per SSE2
+    // register, for `fitness`.
+    static thread_local Triangle_lanes lanes;
+    all_triangles_ = size_ <= Triangle_lanes::capacity;
+    for (std::size_t i = 0; i < size_ && all_triangles_; ++i)
+      all_triangles_ = elements_[i].degree == 3;
+    if (all_triangles_) {
+      for (std::size_t i = 0; i < ((size_ + 1) & ~std::size_t(1)); ++i) {
+        const Element& e = elements_[i < size_ ? i : 0];  // padding repeats element 0
+        for (int k = 0; k < 3; ++k) {
+          lanes.b[k][i] = e.corners[1][k];
+          lanes.c[k][i] = e.corners[2][k];
+          lanes.n[k][i] = e.reference_normal[k];
+        }
+        lanes.fixed[i] = e.fixed_edge_squared;
+      }
+      lanes_ = &lanes;
     }
     // The worst element of the star may only get worse while it stays above 0.5 (a sum-only
     // fitness would trade a sliver for gains elsewhere, as the paper's Table 3 shows).
     double worst = 1;
-    for (const Element& element : elements_) {
+    for (const Element& element : elements()) {
       Vec3 corners[4] = {mesh.points[node], element.corners[1], element.corners[2],
                          element.corners[3]};
       worst = std::min(worst, element_quality(corners, element.degree));
@@ -78,7 +124,7 @@ class Node_star {
   }
 
   int node() const { return node_; }
-  const std::vector<Element>& elements() const { return elements_; }
+  Elements elements() const { return {elements_, size_}; }
 
   /// Search triangle of element e (Fig. 1): V1 = the node, V2 and V3 its neighbours in e.
   void search_triangle(std::size_t e, Vec3& v1, Vec3& v2, Vec3& v3) const {
@@ -91,20 +137,82 @@ class Node_star {
   /// Eq. 5 / eq. 8 with the node at `position`; -1 when an element would fold (inexact screen:
   /// the accepted move is re-checked with exact predicates) or fall below the quality floor.
   double fitness(const Vec3& position) const {
+#ifdef __SSE2__
+    if (all_triangles_) return triangle_fitness(position);
+#endif
     double sum = 0;
     Vec3 corners[4];
-    for (const Element& element : elements_) {
-      corners[0] = position;
-      for (int i = 1; i < element.degree; ++i) corners[i] = element.corners[i];
-      if (dot(cross(corners[1] - corners[0], corners[element.degree - 1] - corners[0]),
-              element.reference_normal) <= 0)
-        return -1;
-      const double quality = element_quality(corners, element.degree);
+    for (const Element& element : elements()) {
+      const Vec3 ab = element.corners[1] - position;
+      const Vec3 ac = element.corners[element.degree - 1] - position;
+      const Vec3 normal = cross(ab, ac);
+      if (dot(normal, element.reference_normal) <= 0) return -1;
+      double quality;
+      if (element.degree == 3) {
+        // alpha (eq. 4), as quality.h computes it, sharing the cross product with the fold
+        // screen and the node-independent edge with the previous calls.
+        const double denominator = dot(ab, ab) + element.fixed_edge_squared + dot(ac, ac);
+        quality = denominator == 0 ? 0 : 2.0 * std::sqrt(3.0) * length(normal) / denominator;
+      } else {
+        corners[0] = position;
+        for (int i = 1; i < 4; ++i) corners[i] = element.corners[i];
+        quality = element_quality(corners, 4);
+      }
       if (quality < quality_floor_) return -1;
       sum += quality;
     }
     return sum;
   }
+
+#ifdef __SSE2__
+  // The same numbers as the general loop (same operations, IEEE sqrt and division), two
+  // triangles at a time; the sum is taken in element order, so the result is bit-identical.
+  double triangle_fitness(const Vec3& position) const {
+    const Triangle_lanes& l = *lanes_;
+    double quality[Triangle_lanes::capacity];
+    bool feasible = true;
+    const __m128d px = _mm_set1_pd(position[0]), py = _mm_set1_pd(position[1]),
+                  pz = _mm_set1_pd(position[2]), scale = _mm_set1_pd(2.0 * std::sqrt(3.0));
+    for (std::size_t i = 0; i < size_; i += 2) {
+      const __m128d abx = _mm_sub_pd(_mm_loadu_pd(l.b[0] + i), px),
+                    aby = _mm_sub_pd(_mm_loadu_pd(l.b[1] + i), py),
+                    abz = _mm_sub_pd(_mm_loadu_pd(l.b[2] + i), pz),
+                    acx = _mm_sub_pd(_mm_loadu_pd(l.c[0] + i), px),
+                    acy = _mm_sub_pd(_mm_loadu_pd(l.c[1] + i), py),
+                    acz = _mm_sub_pd(_mm_loadu_pd(l.c[2] + i), pz);
+      const __m128d nx = _mm_sub_pd(_mm_mul_pd(aby, acz), _mm_mul_pd(abz, acy)),
+                    ny = _mm_sub_pd(_mm_mul_pd(abz, acx), _mm_mul_pd(abx, acz)),
+                    nz = _mm_sub_pd(_mm_mul_pd(abx, acy), _mm_mul_pd(aby, acx));
+      const __m128d side = _mm_add_pd(_mm_add_pd(_mm_mul_pd(nx, _mm_loadu_pd(l.n[0] + i)),
+                                                 _mm_mul_pd(ny, _mm_loadu_pd(l.n[1] + i))),
+                                      _mm_mul_pd(nz, _mm_loadu_pd(l.n[2] + i)));
+      const __m128d ab2 =
+          _mm_add_pd(_mm_add_pd(_mm_mul_pd(abx, abx), _mm_mul_pd(aby, aby)), _mm_mul_pd(abz, abz));
+      const __m128d ac2 =
+          _mm_add_pd(_mm_add_pd(_mm_mul_pd(acx, acx), _mm_mul_pd(acy, acy)), _mm_mul_pd(acz, acz));
+      const __m128d n2 =
+          _mm_add_pd(_mm_add_pd(_mm_mul_pd(nx, nx), _mm_mul_pd(ny, ny)), _mm_mul_pd(nz, nz));
+      const __m128d denominator = _mm_add_pd(_mm_add_pd(ab2, _mm_loadu_pd(l.fixed + i)), ac2);
+      const __m128d q = _mm_div_pd(_mm_mul_pd(scale, _mm_sqrt_pd(n2)), denominator);
+      _mm_storeu_pd(quality + i, q);
+      double sides[2];
+      _mm_storeu_pd(sides, side);
+      double denominators[2];
+      _mm_storeu_pd(denominators, denominator);
+      for (std::size_t k = i; k < std::min(i + 2, size_); ++k) {
+        if (sides[k - i] <= 0) feasible = false;
+        if (denominators[k - i] == 0) quality[k] = 0;
+      }
+    }
+    if (!feasible) return -1;
+    double sum = 0;
+    for (std::size_t i = 0; i < size_; ++i) {
+      if (quality[i] < quality_floor_) return -1;
+      sum += quality[i];
+    }
+    return sum;
+  }
+#endif
 
   /// Exact fold test: every triangle of every element (for a quad, its corner triangles) keeps
   /// the orientation of its reference normal. `Orientation_3` is the traits' exact predicate.
@@ -113,7 +221,7 @@ class Node_star {
     using Point_3 = typename Traits::Point_3;
     auto orientation = traits.orientation_3_object();
     auto to_point = [](const Vec3& p) { return Point_3(p[0], p[1], p[2]); };
-    for (const Element& element : elements_) {
+    for (const Element& element : elements()) {
       Vec3 corners[4];
       corners[0] = position;
       for (int i = 1; i < element.degree; ++i) corners[i] = mesh_.points[element.ring[i]];
@@ -144,7 +252,14 @@ class Node_star {
 
   const Polygon_arrays& mesh_;
   int node_;
-  std::vector<Element> elements_;
+  struct Triangle_lanes {
+    static constexpr std::size_t capacity = 32;  // larger or mixed stars: the general loop
+    double b[3][capacity], c[3][capacity], n[3][capacity], fixed[capacity];
+  };
+  const Element* elements_ = nullptr;
+  const Triangle_lanes* lanes_ = nullptr;
+  bool all_triangles_ = false;
+  std::size_t size_ = 0;
   double quality_floor_ = 0;
 };
 
