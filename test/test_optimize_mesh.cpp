@@ -5,6 +5,7 @@
 #include <CGAL/Mesh_repair/quality.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Mesh_repair/internal/genetic/ga_triangulation.h>
 #include <CGAL/Polygon_mesh_processing/distance.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
@@ -14,6 +15,7 @@
 
 #include <cmath>
 #include <set>
+#include <vector>
 
 namespace {
 
@@ -151,6 +153,81 @@ TEST(OptimizeMesh, SameSeedGivesSameMesh) {
     auto ha = a.halfedge(*fa++), hb = b.halfedge(f);
     EXPECT_EQ(a.point(a.target(ha)), b.point(b.target(hb)));
   }
+}
+
+// The exact shortcut for small regions: every triangulation of a convex hexagon (Catalan(4) = 14)
+// once, best fitness first; the GA, which searches the same space, cannot do better.
+TEST(OptimizeMesh, SmallPolygonsEnumerateAllTriangulationsBestFirst) {
+  namespace G = MR::internal::genetic;
+  std::vector<Point> hexagon;
+  for (int i = 0; i < 6; ++i)
+    hexagon.emplace_back(std::cos(i * CGAL_PI / 3) * (1 + 0.3 * (i % 2)), std::sin(i * CGAL_PI / 3),
+                         0.05 * (i % 3));
+  const std::vector<Kernel::Vector_3> outside;
+  const G::Chord_table table = G::valid_chords<Kernel>(hexagon);
+  G::Shape_smoothness_fitness fitness;
+  const auto all = G::all_triangulations_by_fitness<Kernel>(hexagon, outside, table, fitness);
+  ASSERT_EQ(all.size(), 14u);
+  std::set<std::vector<G::Triangle>> distinct;
+  for (std::size_t k = 0; k < all.size(); ++k) {
+    EXPECT_EQ(all[k].second.size(), 4u);
+    if (k > 0) {
+      EXPECT_LE(all[k].first, all[k - 1].first);
+    }
+    auto sorted = all[k].second;
+    std::sort(sorted.begin(), sorted.end());
+    distinct.insert(sorted);
+  }
+  EXPECT_EQ(distinct.size(), 14u);
+  G::Ga_options options;
+  options.population_size = 20;
+  options.max_generations = 50;
+  const G::Ga_result ga = G::ga_triangulate<Kernel>(hexagon, outside, table, fitness, options);
+  ASSERT_TRUE(ga.found);
+  EXPECT_LE(ga.fitness, all.front().first);
+
+  // A reflex node (index 3 pushed inside): chords leaving the polygon are never enumerated.
+  std::vector<Point> dented = {Point(0, 0, 0),   Point(2, 0, 0), Point(2, 2, 0),
+                               Point(1, 0.5, 0), Point(0, 2, 0), Point(-0.5, 1, 0)};
+  const G::Chord_table dented_table = G::valid_chords<Kernel>(dented);
+  const auto valid =
+      G::all_triangulations_by_fitness<Kernel>(dented, outside, dented_table, fitness);
+  EXPECT_GT(valid.size(), 0u);
+  EXPECT_LT(valid.size(), 14u);
+  for (const auto& t : valid)
+    for (const G::Triangle& tri : t.second)
+      for (int c = 0; c < 3; ++c) EXPECT_TRUE(dented_table.is_valid(tri[c], tri[(c + 1) % 3]));
+}
+
+// Distance control: with the removed input nodes tracked and the distance bound, the input nodes
+// end up closer to the reduced surface than with the thesis' ranking alone.
+double reduced_vertex_error(bool error_tracking) {
+  Mesh bump;
+  MR::make_height_field<Mesh, Point>(bump, -1, 1, -1, 1, 40, 40, [](double x, double y) {
+    return 0.4 * std::exp(-4 * (x * x + y * y)) + 0.05 * x * y;
+  });
+  const Mesh input = bump;
+  auto options = MR::internal::optimize::options_from_parameters(
+      bump, MR::parameters::target_face_ratio(0.15));
+  options.error_tracking = error_tracking;
+  MR::Default_visitor visitor;
+  using Optimizer =
+      MR::internal::optimize::Optimizer<Mesh, Mesh::Property_map<Mesh::Vertex_index, Point>, Kernel,
+                                        MR::Default_visitor>;
+  Optimizer optimizer(bump, bump.points(), Kernel(), options, visitor);
+  const auto result = optimizer.run();
+  EXPECT_TRUE(result.target_reached);
+  expect_valid(bump, false);
+  std::vector<Point> points;
+  for (auto v : input.vertices()) points.push_back(input.point(v));
+  return PMP::max_distance_to_triangle_mesh<CGAL::Sequential_tag>(points, bump);
+}
+
+TEST(OptimizeMesh, DistanceControlKeepsInputNodesCloserToTheReducedSurface) {
+  const double tracked = reduced_vertex_error(true);
+  const double untracked = reduced_vertex_error(false);
+  EXPECT_GT(tracked, 0.0);
+  EXPECT_LT(tracked, untracked);
 }
 
 }  // namespace

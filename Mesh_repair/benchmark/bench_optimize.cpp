@@ -4,7 +4,8 @@
 // collapse (Lindstrom-Turk and Garland-Heckbert plane quadrics) at the same face count:
 // symmetric Hausdorff distance to the input, feature retention, triangle quality, time.
 // Prints one Markdown table.
-//   bench_optimize [--quick] [MESH RATIO [SUBDIVISIONS]]...
+//   bench_optimize [--ga-only] [MESH RATIO [SUBDIVISIONS]]...  (--ga-only: only the optimize_mesh
+//   row)
 // Without meshes: fandisk 0.10, bunny00 0.10, elephant 0.40 and bunny00 Loop-subdivided twice
 // (1.2 M faces) 0.13, from MESH_REPAIR_DEMO_DATA (or the folder in $MESH_REPAIR_DEMO_DATA).
 
@@ -13,6 +14,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/distance.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Subdivision_method_3/subdivision_methods_3.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Count_stop_predicate.h>
@@ -21,7 +23,12 @@
 #include <CGAL/Surface_mesh_simplification/edge_collapse.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+
 #include <chrono>
+#include <ctime>
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
@@ -30,6 +37,8 @@
 #include <vector>
 
 namespace {
+
+bool ga_only = false;  // --ga-only: skip the CGAL rows and the quality-mode row
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
@@ -136,9 +145,48 @@ void run_case(const std::string& path, double ratio, int subdivisions) {
 
   Mesh ours = input;
   rows[0].method = "optimize_mesh (GA)";
+  MR::Optimization_result result;
+  const std::clock_t cpu_start = std::clock();
   rows[0].seconds =
-      time_of([&] { MR::optimize_mesh(ours, MR::parameters::target_face_ratio(ratio)); });
+      time_of([&] { result = MR::optimize_mesh(ours, MR::parameters::target_face_ratio(ratio)); });
+  const double cpu_seconds = double(std::clock() - cpu_start) / CLOCKS_PER_SEC;
   measure(input, ours, rows[0]);
+  if (ga_only) {
+    rows.resize(1);
+    auto np = PMP::parameters::number_of_points_on_faces(std::size_t(300000))
+                  .use_random_uniform_sampling(true);
+    const double diag = diagonal(input);
+    std::fprintf(
+        stderr,
+        "cpu %.2f s, passes %zu replaced %zu too_far %zu not_better %zu fold %zu dup %zu inter "
+        "%zu; "
+        "Hausdorff input->output %.5f output->input %.5f\n",
+        cpu_seconds, result.passes, result.regions_replaced, result.regions_too_far,
+        result.regions_not_better, result.regions_fold_or_crease, result.regions_duplicate_edge,
+        result.regions_self_intersection,
+        PMP::approximate_Hausdorff_distance<CGAL::Parallel_if_available_tag>(input, ours, np) /
+            diag,
+        PMP::approximate_Hausdorff_distance<CGAL::Parallel_if_available_tag>(ours, input, np) /
+            diag);
+    std::fprintf(stderr, "output valid %d, self-intersecting %d\n",
+                 int(CGAL::is_valid_polygon_mesh(ours)),
+                 int(PMP::does_self_intersect<CGAL::Parallel_if_available_tag>(ours)));
+    if (std::getenv("MR_BENCH_WORST")) {  // where the input is farthest from the output
+      using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
+      CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>> tree(faces(ours).first,
+                                                                 faces(ours).second, ours);
+      std::vector<std::pair<double, Mesh::Vertex_index>> far;
+      for (auto v : input.vertices())
+        far.emplace_back(std::sqrt(tree.squared_distance(input.point(v))) / diag, v);
+      std::sort(far.rbegin(), far.rend());
+      for (int k = 0; k < 8 && k < int(far.size()); ++k)
+        std::fprintf(stderr, "  %.5f at %g %g %g border %d\n", far[k].first,
+                     input.point(far[k].second).x(), input.point(far[k].second).y(),
+                     input.point(far[k].second).z(), int(input.is_border(far[k].second)));
+      std::fprintf(stderr, "  quantiles 99%% %.5f 99.9%% %.5f\n", far[far.size() / 100].first,
+                   far[far.size() / 1000].first);
+    }
+  }
   // CGAL's stop predicate counts edges: E = 3F/2 on a closed mesh (plus half the border edges).
   const std::size_t border_edges =
       std::size_t(std::count_if(input.halfedges().begin(), input.halfedges().end(),
@@ -146,32 +194,35 @@ void run_case(const std::string& path, double ratio, int subdivisions) {
   const std::size_t target_edges = (3 * rows[0].faces + border_edges) / 2;
 
   Mesh lt = input;
-  rows[1].method = "CGAL edge collapse, Lindstrom-Turk";
-  rows[1].seconds = time_of([&] {
-    SMS::edge_collapse(lt, SMS::Count_stop_predicate<Mesh>(target_edges),
-                       CGAL::parameters::get_cost(SMS::LindstromTurk_cost<Mesh>())
-                           .get_placement(SMS::LindstromTurk_placement<Mesh>()));
-  });
-  measure(input, lt, rows[1]);
+  if (!ga_only) {
+    rows[1].method = "CGAL edge collapse, Lindstrom-Turk";
+    rows[1].seconds = time_of([&] {
+      SMS::edge_collapse(lt, SMS::Count_stop_predicate<Mesh>(target_edges),
+                         CGAL::parameters::get_cost(SMS::LindstromTurk_cost<Mesh>())
+                             .get_placement(SMS::LindstromTurk_placement<Mesh>()));
+    });
+    measure(input, lt, rows[1]);
 
-  Mesh gh = input;
-  rows[2].method = "CGAL edge collapse, Garland-Heckbert";
-  rows[2].seconds = time_of([&] {
-    SMS::GarlandHeckbert_plane_policies<Mesh, Kernel> policies(gh);
-    SMS::edge_collapse(
-        gh, SMS::Count_stop_predicate<Mesh>(target_edges),
-        CGAL::parameters::get_cost(policies.get_cost()).get_placement(policies.get_placement()));
-  });
-  measure(input, gh, rows[2]);
+    Mesh gh = input;
+    rows[2].method = "CGAL edge collapse, Garland-Heckbert";
+    rows[2].seconds = time_of([&] {
+      SMS::GarlandHeckbert_plane_policies<Mesh, Kernel> policies(gh);
+      SMS::edge_collapse(
+          gh, SMS::Count_stop_predicate<Mesh>(target_edges),
+          CGAL::parameters::get_cost(policies.get_cost()).get_placement(policies.get_placement()));
+    });
+    measure(input, gh, rows[2]);
 
-  // Quality mode (7.2.3b) on the Lindstrom-Turk result: same faces, better triangles?
-  rows.emplace_back();
-  rows.back().method = "CGAL Lindstrom-Turk, then optimize_mesh quality";
-  Mesh improved = lt;
-  rows.back().seconds = time_of([&] {
-    MR::optimize_mesh(improved, MR::parameters::optimization_mode(MR::Optimization_mode::quality));
-  });
-  measure(input, improved, rows.back());
+    // Quality mode (7.2.3b) on the Lindstrom-Turk result: same faces, better triangles?
+    rows.emplace_back();
+    rows.back().method = "CGAL Lindstrom-Turk, then optimize_mesh quality";
+    Mesh improved = lt;
+    rows.back().seconds = time_of([&] {
+      MR::optimize_mesh(improved,
+                        MR::parameters::optimization_mode(MR::Optimization_mode::quality));
+    });
+    measure(input, improved, rows.back());
+  }
 
   for (const Measure& m : rows) {
     std::printf("| %s | %zu | %s | %zu | %.1f%% | %.5f | %.2f | %.3f | %s | %.3f | %.3f |\n",
@@ -193,8 +244,13 @@ int main(int argc, char** argv) {
       "| mesh | input faces | method | output faces | reduction | Hausdorff / diagonal | "
       "min angle (deg) | mean alpha | corners kept | sharp-edge length ratio | time (s) "
       "|\n|---|---|---|---|---|---|---|---|---|---|---|\n");
-  if (argc > 1) {
-    for (int i = 1; i + 1 < argc;) {
+  int first = 1;
+  if (argc > 1 && std::string(argv[1]) == "--ga-only") {
+    ga_only = true;
+    first = 2;
+  }
+  if (argc > first) {
+    for (int i = first; i + 1 < argc;) {
       const std::string path = argv[i];
       const double ratio = std::atof(argv[i + 1]);
       int subdivisions = 0;

@@ -50,6 +50,7 @@ void write_result(CGAL::Mesh_repair::internal::Json_writer& json,
   json.field("regions_fold_or_crease", r.regions_fold_or_crease);
   json.field("regions_self_intersection", r.regions_self_intersection);
   json.field("regions_not_better", r.regions_not_better);
+  json.field("regions_too_far", r.regions_too_far);
   json.field("regions_without_triangulation", r.regions_without_triangulation);
   json.field("regions_refused_by_mesh", r.regions_refused_by_mesh);
   json.field("corner_nodes", r.corner_nodes).field("feature_edges", r.feature_edges);

@@ -22,6 +22,61 @@
 namespace CGAL {
 namespace Mesh_repair {
 
+namespace internal {
+namespace optimize {
+
+/// The options of `optimize_mesh()` from its named parameters (also used by the tests to switch
+/// internal choices off).
+template <class PolygonMesh, class NamedParameters>
+Optimizer_options options_from_parameters(const PolygonMesh& pm, const NamedParameters& np) {
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  Optimizer_options options;
+  options.mode = choose_parameter(get_parameter(np, internal_np::optimization_mode_t()),
+                                  Optimization_mode::reduction);
+  const bool reduction = options.mode == Optimization_mode::reduction;
+  options.weighing_threshold =
+      choose_parameter(get_parameter(np, internal_np::weighing_factor_threshold_t()),
+                       std::numeric_limits<double>::infinity());
+  const double default_ratio = std::isfinite(options.weighing_threshold) ? 0.0 : 0.5;
+  const double ratio =
+      choose_parameter(get_parameter(np, internal_np::target_face_ratio_t()), default_ratio);
+  const std::size_t input_faces = std::size_t(num_faces(pm));
+  options.target_faces = choose_parameter(get_parameter(np, internal_np::target_face_count_t()),
+                                          std::size_t(std::llround(ratio * double(input_faces))));
+  options.feature_angle_deg =
+      choose_parameter(get_parameter(np, internal_np::feature_angle_deg_t()), 135.0);
+  options.max_passes = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations),
+                                        reduction ? 100 : 50);
+  options.seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0u);
+
+  auto& settings = options.retriangulation;
+  settings.quality_mode = !reduction;
+  settings.fitness.w_shape =
+      choose_parameter(get_parameter(np, internal_np::shape_weight_t()), reduction ? 0.2 : 0.6);
+  settings.fitness.w_internal = choose_parameter(
+      get_parameter(np, internal_np::smoothness_weight_t()), reduction ? 0.4 : 0.2);
+  settings.fitness.w_boundary = choose_parameter(
+      get_parameter(np, internal_np::surrounding_weight_t()), reduction ? 0.4 : 0.2);
+  settings.min_angle_floor_deg =
+      choose_parameter(get_parameter(np, internal_np::min_angle_floor_deg_t()), 15.0);
+  settings.feature_cosine = std::cos(options.feature_angle_deg * CGAL_PI / 180.0);
+  settings.ga.population_size =
+      choose_parameter(get_parameter(np, internal_np::population_size_t()), 6);
+  settings.ga.max_generations =
+      choose_parameter(get_parameter(np, internal_np::max_generations_t()), 3);
+  // Polygons of up to 6 nodes (the star of a degree-6 node): all their 14 or fewer
+  // triangulations are evaluated instead of running the GA (its optimum, found exactly).
+  settings.exhaustive_max_nodes = 6;
+  // The GA's own stop on a target fitness is off: every region gets its generations.
+  settings.ga.target_fitness = std::numeric_limits<double>::infinity();
+
+  return options;
+}
+
+}  // namespace optimize
+}  // namespace internal
+
 /// \ingroup PkgMeshRepairRef
 /// Optimises the triangle mesh `pm` in place (thesis 7.1-7.3). Edges are classified feature /
 /// non-feature (border, or dihedral angle below `feature_angle_deg`) and nodes into corner,
@@ -30,9 +85,13 @@ namespace Mesh_repair {
 /// eq. 7.1-7.4 (normal deviation of the affected elements), and, in that order, non-touching
 /// regions are removed and re-triangulated by the genetic algorithm of 7.3 with the fitness of
 /// eq. 7.6-7.9:
-/// - `Optimization_mode::reduction`: the triangles around the removable nodes of the element
-///   (7.2.3a), or around a removable feature node with its feature line kept as one edge; passes
-///   repeat until the target face count, the weighing-factor bound or no more progress;
+/// - `Optimization_mode::reduction`: the star of a removable node (7.2.3a), a removable feature
+///   node's star with its feature line kept as one edge; regions are ranked by the distance
+///   their removal is expected to cause, every removed input node is tracked on its closest
+///   face, and a patch is refused when a tracked node would end farther from it than the pass'
+///   bound (see doc/optimize_mesh.md, "Distance control"); small polygons (up to 6 nodes) are
+///   triangulated by evaluating all their triangulations, larger ones by the GA; passes repeat
+///   until the target face count, the weighing-factor bound or no more progress;
 /// - `Optimization_mode::quality`: the element and its three edge neighbours (7.2.3b), replaced
 ///   only when both the fitness and the smallest angle of the region improve; the face count
 ///   does not change.
@@ -124,43 +183,8 @@ Optimization_result optimize_mesh(PolygonMesh& pm,
   auto&& visitor =
       choose_parameter(get_parameter_reference(np, CGAL::internal_np::visitor), default_visitor);
 
-  internal::optimize::Optimizer_options options;
-  options.mode = choose_parameter(get_parameter(np, internal_np::optimization_mode_t()),
-                                  Optimization_mode::reduction);
-  const bool reduction = options.mode == Optimization_mode::reduction;
-  options.weighing_threshold =
-      choose_parameter(get_parameter(np, internal_np::weighing_factor_threshold_t()),
-                       std::numeric_limits<double>::infinity());
-  const double default_ratio = std::isfinite(options.weighing_threshold) ? 0.0 : 0.5;
-  const double ratio =
-      choose_parameter(get_parameter(np, internal_np::target_face_ratio_t()), default_ratio);
-  const std::size_t input_faces = std::size_t(num_faces(pm));
-  options.target_faces = choose_parameter(get_parameter(np, internal_np::target_face_count_t()),
-                                          std::size_t(std::llround(ratio * double(input_faces))));
-  options.feature_angle_deg =
-      choose_parameter(get_parameter(np, internal_np::feature_angle_deg_t()), 135.0);
-  options.max_passes = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations),
-                                        reduction ? 100 : 50);
-  options.seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0u);
-
-  auto& settings = options.retriangulation;
-  settings.quality_mode = !reduction;
-  settings.fitness.w_shape =
-      choose_parameter(get_parameter(np, internal_np::shape_weight_t()), reduction ? 0.2 : 0.6);
-  settings.fitness.w_internal = choose_parameter(
-      get_parameter(np, internal_np::smoothness_weight_t()), reduction ? 0.4 : 0.2);
-  settings.fitness.w_boundary = choose_parameter(
-      get_parameter(np, internal_np::surrounding_weight_t()), reduction ? 0.4 : 0.2);
-  settings.min_angle_floor_deg =
-      choose_parameter(get_parameter(np, internal_np::min_angle_floor_deg_t()), 15.0);
-  settings.feature_cosine = std::cos(options.feature_angle_deg * CGAL_PI / 180.0);
-  settings.ga.population_size =
-      choose_parameter(get_parameter(np, internal_np::population_size_t()), 6);
-  settings.ga.max_generations =
-      choose_parameter(get_parameter(np, internal_np::max_generations_t()), 3);
-  // The GA's own stop on a target fitness is off: every region gets its generations.
-  settings.ga.target_fitness = std::numeric_limits<double>::infinity();
-
+  internal::optimize::Optimizer_options options =
+      internal::optimize::options_from_parameters(pm, np);
   using Visitor = std::remove_reference_t<decltype(visitor)>;
   internal::optimize::Optimizer<PolygonMesh, std::remove_const_t<decltype(vpm)>, Geom_traits,
                                 Visitor>

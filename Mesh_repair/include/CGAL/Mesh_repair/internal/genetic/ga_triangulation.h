@@ -723,6 +723,51 @@ Ga_result ga_triangulate(const std::vector<typename Kernel::Point_3>& points,
   return engine.run(engine.make(std::move(*seed)));
 }
 
+/// Every triangulation with valid chords of a small polygon, best `fitness` first (our
+/// addition, used by `optimize_mesh` for regions of at most a handful of nodes). An n-gon has
+/// Catalan(n - 2) triangulations (2, 5, 14, 42 for n = 4..7): for such polygons enumerating them
+/// all costs fewer fitness evaluations than one GA run, and its first entry is the optimum the
+/// GA converges to (the GA searches the same space of valid chord sets with the same fitness).
+/// Empty when no triangulation with valid chords exists. Does not change `ga_triangulate`.
+template <class Kernel, class Fitness>
+std::vector<std::pair<double, std::vector<Triangle>>> all_triangulations_by_fitness(
+    const std::vector<typename Kernel::Point_3>& points,
+    const std::vector<typename Kernel::Vector_3>& outside_normals, const Chord_table& table,
+    const Fitness& fitness) {
+  std::vector<std::pair<double, std::vector<Triangle>>> result;
+  const int n = int(points.size());
+  if (n < 3) return result;
+  // Triangulations of the sub-polygon i..k closed by the (valid) chord or edge (i, k).
+  auto enumerate = [&](auto&& self, int i, int k) -> std::vector<std::vector<Triangle>> {
+    if (k - i < 2) return {std::vector<Triangle>()};
+    std::vector<std::vector<Triangle>> all;
+    for (int m = i + 1; m < k; ++m) {
+      if (!table.is_valid(i, m) || !table.is_valid(m, k)) continue;
+      const auto left = self(self, i, m);
+      if (left.empty()) continue;
+      const auto right = self(self, m, k);
+      for (const auto& l : left)
+        for (const auto& r : right) {
+          std::vector<Triangle> t = l;
+          t.insert(t.end(), r.begin(), r.end());
+          t.push_back(Triangle{i, m, k});
+          all.push_back(std::move(t));
+        }
+    }
+    return all;
+  };
+  std::vector<std::vector<Triangle>> all = enumerate(enumerate, 0, n - 1);
+  if (all.empty()) return result;
+  detail::Ga_engine<Kernel, Fitness> engine(points, outside_normals, table, fitness, Ga_options());
+  for (auto& triangles : all) {
+    const double f = engine.make(triangles).fitness;
+    result.emplace_back(f, std::move(triangles));
+  }
+  std::stable_sort(result.begin(), result.end(),
+                   [](const auto& a, const auto& b) { return a.first > b.first; });
+  return result;
+}
+
 }  // namespace genetic
 }  // namespace internal
 }  // namespace Mesh_repair

@@ -110,6 +110,17 @@ bool node_region(typename boost::graph_traits<PolygonMesh>::face_descriptor f,
   return close_region(region, pm, classification);
 }
 
+/// (a') The star of one removable interior node `v` (region (a) restricted to one node).
+template <class PolygonMesh, class Classification>
+bool star_region(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v,
+                 const PolygonMesh& pm, const Classification& classification,
+                 Region<PolygonMesh>& region) {
+  if (classification.type(v) != Node_type::interior) return false;
+  region.removed.push_back(v);
+  add_star(v, pm, region.faces);
+  return close_region(region, pm, classification);
+}
+
 /// (b) The element and its edge neighbours; a neighbour across a feature edge is left out
 /// (thesis: "the related triangular elements will not be involved").
 template <class PolygonMesh, class Classification>

@@ -20,6 +20,7 @@
 
 #include <algorithm>
 #include <array>
+#include <functional>
 #include <vector>
 
 namespace CGAL {
@@ -34,6 +35,7 @@ enum class Region_outcome {
   fold_or_crease,     // a new normal turns away, a triangle is flat, or a crease/fold appears
   self_intersection,  // a new triangle crosses a surrounding one
   not_better,         // the old triangles are kept
+  too_far,            // the new patch is farther than the error bound from removed points
   mesh_refused        // the mesh refused a face: rolled back
 };
 
@@ -43,6 +45,13 @@ struct Retriangulation_settings {
   double feature_cosine = 0;       // cos of the feature angle
   bool quality_mode = false;       // accept only when fitness and minimum angle both improve
   double min_angle_floor_deg = 0;  // reduction: new smallest angle >= min(old, floor)
+  /// Polygons of at most this many nodes are triangulated by enumerating all their
+  /// triangulations (genetic::all_triangulations_by_fitness: the optimum the GA converges to)
+  /// instead of running the GA; 0 = always the GA.
+  int exhaustive_max_nodes = 0;
+  /// How many of the enumerated triangulations, best fitness first, are tried against the exact
+  /// tests before the region is given up.
+  int exhaustive_tries = 3;
 };
 
 template <class PolygonMesh, class VertexPointMap, class GeomTraits, class Classification>
@@ -72,9 +81,18 @@ class Region_retriangulator {
       polygon_of.insert(polygon_of.end(), patch.size(), int(p));
     }
     if (!acceptable_shape(region, triangles)) return Region_outcome::not_better;
+    if (accept_patch && !accept_patch(region, triangles)) return Region_outcome::too_far;
     if (!intersection_free(region, triangles)) return Region_outcome::self_intersection;
+    last_triangles_ = triangles;
     return replace(region, triangles) ? Region_outcome::replaced : Region_outcome::mesh_refused;
   }
+
+  /// Optional extra test on the whole new patch (the optimiser's distance bound), run after the
+  /// shape tests and before the intersection tests.
+  std::function<bool(const Region<PolygonMesh>&, const std::vector<Vertex_triangle>&)> accept_patch;
+
+  /// The triangles of the last replaced region.
+  const std::vector<Vertex_triangle>& last_triangles() const { return last_triangles_; }
 
  private:
   const Point& point(vertex_descriptor v) const { return get(vpm_, v); }
@@ -107,6 +125,14 @@ class Region_retriangulator {
     std::vector<std::vector<genetic::Triangle>> candidates;
     if (n == 3) {
       candidates.push_back({genetic::Triangle{0, 1, 2}});
+    } else if (n <= settings_.exhaustive_max_nodes) {
+      // Exact shortcut: all Catalan(n - 2) triangulations, best fitness (eq. 7.9) first.
+      const genetic::Chord_table table = genetic::valid_chords<GeomTraits>(points);
+      auto all = genetic::all_triangulations_by_fitness<GeomTraits>(points, outside, table,
+                                                                    settings_.fitness);
+      if (all.empty()) return Region_outcome::no_triangulation;
+      for (std::size_t k = 0; k < all.size() && int(k) < settings_.exhaustive_tries; ++k)
+        candidates.push_back(std::move(all[k].second));
     } else {
       const genetic::Chord_table table = genetic::valid_chords<GeomTraits>(points);
       genetic::Ga_result result = genetic::ga_triangulate<GeomTraits>(
@@ -392,6 +418,7 @@ class Region_retriangulator {
   const GeomTraits& gt_;
   const Classification& classification_;
   const Retriangulation_settings& settings_;
+  std::vector<Vertex_triangle> last_triangles_;
 };
 
 }  // namespace optimize
