@@ -5,6 +5,7 @@
 #include <CGAL/Mesh_repair/io.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
 #include <gtest/gtest.h>
 
@@ -103,6 +104,60 @@ TEST(AutomaticRepair, BundledDefectivePartBecomesClosedAndValid) {
   EXPECT_TRUE(result.complete()) << (result.remaining.empty() ? "" : result.remaining.front());
 }
 
+// Two unit spheres whose balls overlap, each with the part inside the other's (slightly larger)
+// ball removed: the input does not self-intersect, but any patch that follows the curvature
+// of one hole crosses the other sphere's patch or its border region.
+Mesh overlapping_spheres_with_facing_holes() {
+  Mesh mesh;
+  const Point a(-0.95, 0, 0), b(0.95, 0, 0);
+  MR::make_sphere(mesh, a, 1.0, 4);
+  MR::make_sphere(mesh, b, 1.0, 4);
+  std::vector<Mesh::Face_index> doomed;
+  for (auto f : mesh.faces()) {
+    for (auto v : vertices_around_face(mesh.halfedge(f), mesh)) {
+      const Point& p = mesh.point(v);
+      const Point& other = p.x() < 0 ? b : a;
+      if (CGAL::squared_distance(p, other) < 1.05 * 1.05) {
+        doomed.push_back(f);
+        break;
+      }
+    }
+  }
+  for (auto f : doomed) CGAL::Euler::remove_face(mesh.halfedge(f), mesh);
+  mesh.collect_garbage();
+  return mesh;
+}
+
+TEST(FillHoles, APatchMeetingAnotherPartOfTheMeshIsRolledBack) {
+  Mesh mesh = overlapping_spheres_with_facing_holes();
+  ASSERT_EQ(border_cycle_count(mesh), 2u);
+  ASSERT_FALSE(PMP::does_self_intersect(mesh));
+  for (auto method : {MR::Fill_method::automatic, MR::Fill_method::liepa}) {
+    Mesh filled = mesh;
+    const auto result = MR::fill_holes(filled, MR::parameters::fill_method(method));
+    EXPECT_TRUE(CGAL::is_valid_polygon_mesh(filled));
+    EXPECT_FALSE(PMP::does_self_intersect(filled)) << MR::to_string(method);
+    // The first hole is filled; every attempt on the second crosses the first patch.
+    EXPECT_EQ(result.filled, 1u) << MR::to_string(method);
+    EXPECT_EQ(result.failed, 1u) << MR::to_string(method);
+    EXPECT_EQ(border_cycle_count(filled), 1u);
+    for (const auto& hole : result.holes) {
+      if (!hole.filled) {
+        EXPECT_NE(hole.failure.find("self-intersects"), std::string::npos);
+      }
+    }
+  }
+}
+
+TEST(AutomaticRepair, PatchesNeverCreateSelfIntersectionsAndUnfillableHolesAreListed) {
+  Mesh mesh = overlapping_spheres_with_facing_holes();
+  const auto result = MR::automatic_repair(mesh);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  EXPECT_EQ(result.self_intersections_output, 0u);
+  EXPECT_EQ(result.holes.failed, 1u);
+  EXPECT_FALSE(result.complete());
+}
+
 TEST(AutomaticRepair, RealScansWithHolesBecomeClosed) {
   for (const char* name : {"elephant-with-holes.off", "mech-holes-shark.off"}) {
     const std::string path = std::string(MESH_REPAIR_DEMO_DATA_DIR) + "/" + name;
@@ -116,6 +171,23 @@ TEST(AutomaticRepair, RealScansWithHolesBecomeClosed) {
     EXPECT_TRUE(CGAL::is_closed(mesh)) << name;
     EXPECT_EQ(result.holes.failed, 0u) << name;
   }
+}
+
+// A coarse CAD mesh whose derived stitching tolerance (6% of the diagonal) would push faces
+// through their neighbours: the stitching trial must reduce or skip it.
+TEST(AutomaticRepair, StitchingNeverAddsSelfIntersectionsOnCoarseCad) {
+  const std::string path = std::string(MESH_REPAIR_DEMO_DATA_DIR) + "/ALSTOM_TEST4.off";
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << "libcgal-demo meshes absent (" << path << ")";
+  Mesh mesh;
+  MR::Soup_repair_report soup;
+  ASSERT_EQ(MR::read_mesh(path, mesh, soup), "");
+  const auto result = MR::automatic_repair(mesh);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  EXPECT_TRUE(result.self_intersections_checked);
+  EXPECT_LE(result.self_intersections_output, result.self_intersections_input);
+  bool trial = false;
+  for (const auto& step : result.steps) trial = trial || step.name == "stitching trial";
+  EXPECT_TRUE(trial);
 }
 
 }  // namespace

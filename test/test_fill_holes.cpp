@@ -3,6 +3,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Mesh_repair/fill_holes.h>
 #include <CGAL/Mesh_repair/generators.h>
+#include <CGAL/Mesh_repair/hole_benchmark.h>
+#include <CGAL/Mesh_repair/hole_filling/advancing_front.h>
 #include <CGAL/Mesh_repair/io.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
@@ -15,6 +17,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 namespace {
@@ -101,6 +104,116 @@ TEST(FillHoles, AdvancingFrontWithoutQuadricStillClosesTheHoleWithMatchingDensit
   // Same density as the surroundings: within a factor 1.5 of the faces removed.
   EXPECT_GT(double(patch.faces.size()), removed_faces / 1.5);
   EXPECT_LT(double(patch.faces.size()), removed_faces * 1.5);
+}
+
+/// Smallest angle (degrees) over the faces of `faces`.
+double smallest_angle(const Mesh& mesh, const std::vector<face_descriptor>& faces) {
+  double smallest = 180;
+  for (face_descriptor f : faces) {
+    const auto h = mesh.halfedge(f);
+    smallest = std::min(smallest, MR::internal::smallest_angle_deg(
+                                      mesh.point(mesh.source(h)), mesh.point(mesh.target(h)),
+                                      mesh.point(mesh.target(mesh.next(h)))));
+  }
+  return smallest;
+}
+
+/// Fills the holes `mesh_repair bench holes` punches into a demo mesh with the advancing front
+/// alone (no other method behind it); expects every hole filled by the front, every patch free of
+/// intersections with the whole mesh and of triangles sharper than `min_angle` degrees.
+void expect_front_fills_punched_holes(const std::string& name, double radius,
+                                      std::initializer_list<unsigned> seeds, double min_angle) {
+  const fs::path path = fs::path(MESH_REPAIR_DEMO_DATA_DIR) / name;
+  if (!fs::exists(path)) GTEST_SKIP() << path << " absent (scripts/fetch_demo_data.sh)";
+  Mesh base;
+  MR::Soup_repair_report soup;
+  ASSERT_EQ(MR::read_mesh(path.string(), base, soup), "");
+  for (unsigned seed : seeds) {
+    Mesh mesh = base;
+    const auto punched = MR::punch_holes(
+        mesh, MR::parameters::number_of_holes(3).hole_radius(radius).random_seed(seed));
+    ASSERT_EQ(punched.holes.size(), 3u);
+    std::vector<face_descriptor> patch_faces;
+    for (const auto& hole : punched.holes) {
+      const MR::Hole_fill_report report = MR::fill_hole(
+          mesh, hole.border_halfedge,
+          MR::parameters::fill_method(MR::Fill_method::advancing_front).random_seed(seed));
+      ASSERT_TRUE(report.filled) << name << " seed " << seed << ": " << report.failure;
+      EXPECT_EQ(report.used, MR::Fill_method::advancing_front);
+      bool bounded = true;
+      const auto faces = MR::hole_patch_faces(mesh, hole, bounded);
+      EXPECT_TRUE(bounded);
+      EXPECT_GE(smallest_angle(mesh, faces), min_angle) << name << " seed " << seed;
+      patch_faces.insert(patch_faces.end(), faces.begin(), faces.end());
+    }
+    EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+    std::vector<std::pair<face_descriptor, face_descriptor>> pairs;
+    PMP::self_intersections(mesh, std::back_inserter(pairs));
+    const std::set<face_descriptor> in_patch(patch_faces.begin(), patch_faces.end());
+    for (const auto& pair : pairs)
+      EXPECT_FALSE(in_patch.count(pair.first) || in_patch.count(pair.second)) << name;
+  }
+}
+
+// Before the 3D checks and the closing of stuck fronts, 7 of these 9 elephant holes (radius
+// 0.12 x diagonal) were left open by the front or rolled back as self-intersecting.
+TEST(FillHolesDemoData, AdvancingFrontAloneFillsTheLargePunchedElephantHoles) {
+  expect_front_fills_punched_holes("elephant.off", 0.12, {1, 2, 3}, 2.0);
+}
+
+// Holes where the front used to be stuck, to leave a self-intersecting patch or (seed 2) a
+// triangle of zero area (a node projected onto a border edge): min angle was 6e-14 degrees.
+TEST(FillHolesDemoData, AdvancingFrontAloneFillsSmallElephantHolesWithoutSlivers) {
+  expect_front_fills_punched_holes("elephant.off", 0.05, {1, 2, 3}, 2.0);
+}
+
+TEST(FillHolesDemoData, AdvancingFrontAloneFillsTheFemurAndBunnyHoles) {
+  expect_front_fills_punched_holes("femur.off", 0.12, {1, 2, 3}, 2.0);
+  expect_front_fills_punched_holes("bunny00.off", 0.05, {1, 2, 3}, 2.0);
+}
+
+/// A front that cannot advance (no fan passes a 89-degree minimum angle) is closed by the
+/// checked triangulation of its loop, which avoids an edge the mesh already has (1-3) and keeps
+/// the loop's orientation; with a wall through the square no triangulation passes the exact 3D
+/// test and the front reports failure with its open loop.
+TEST(AdvancingFrontCore, StuckFrontIsClosedByTheCheckedTriangulationOfItsLoop) {
+  namespace MI = MR::internal;
+  MI::Front_input input;
+  input.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  input.normals = {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}, {0, 0, 1}};
+  input.cycle = {0, 1, 2, 3};
+  input.existing_edges = {{1, 3}};
+  MI::Front_options options;
+  options.min_angle_deg = 89;
+  const auto identity = [](const MI::Vec3& p, const MI::Vec3&) { return p; };
+  const auto size = [](const MI::Vec3&, double) { return 1.0; };
+
+  const MI::Front_triangulation stuck = MI::advance_front(input, identity, size, options);
+  EXPECT_FALSE(stuck.closed);
+  ASSERT_EQ(stuck.remnant.size(), 1u);
+  EXPECT_EQ(stuck.remnant[0].size(), 4u);
+
+  options.close_remnant = true;
+  const MI::Front_triangulation t = MI::advance_front(input, identity, size, options);
+  ASSERT_TRUE(t.closed) << t.failure;
+  EXPECT_EQ(t.remnant_edges, 4u);
+  ASSERT_EQ(t.triangles.size(), 2u);
+  for (const auto& tri : t.triangles) {
+    const auto has = [&](std::size_t p) { return tri[0] == p || tri[1] == p || tri[2] == p; };
+    EXPECT_TRUE(has(0) && has(2));  // the diagonal 0-2, not the existing edge 1-3
+    // Counterclockwise seen from +z, like the loop.
+    const MI::Vec3 n = MI::cross(MI::sub(t.points[tri[1]], t.points[tri[0]]),
+                                 MI::sub(t.points[tri[2]], t.points[tri[0]]));
+    EXPECT_GT(n[2], 0);
+  }
+
+  // A vertical wall standing in the square: every triangle of the square meets it.
+  input.existing_edges.clear();
+  input.context_points = {{0.4, 0.6, -1}, {0.6, 0.4, -1}, {0.5, 0.5, 1}};
+  input.context_triangles = {{4, 5, 6}};
+  const MI::Front_triangulation walled = MI::advance_front(input, identity, size, options);
+  EXPECT_FALSE(walled.closed);
+  EXPECT_FALSE(walled.failure.empty());
 }
 
 TEST(FillHoles, LiepaClosesASphereHoleWithEveryContinuity) {
@@ -217,7 +330,10 @@ TEST(FillHoles, AutomaticRecordsTheFallbackWhenTheFrontFails) {
   const MR::Fill_result result = MR::fill_holes(sheet);
   ASSERT_EQ(result.holes.size(), 1u);
   EXPECT_EQ(result.holes[0].requested, MR::Fill_method::automatic);
-  EXPECT_EQ(result.holes[0].fallbacks.size(), 2u);
+  // The sheet's outline cannot be filled without covering the sheet: the front, Liepa and the
+  // last-resort membrane (Liepa C0) are all rejected and listed.
+  EXPECT_EQ(result.holes[0].fallbacks.size(), 3u);
+  EXPECT_FALSE(result.holes[0].filled);
   EXPECT_TRUE(CGAL::is_valid_polygon_mesh(sheet));
 }
 

@@ -115,7 +115,8 @@ const std::vector<std::string> figure_keys = {"faces_before",
                                               "valid",
                                               "manifold",
                                               "self_intersections_before",
-                                              "self_intersections_after"};
+                                              "self_intersections_after",
+                                              "only_holes_before"};
 
 void write_summaries(const fs::path& out_dir, const std::vector<Job>& jobs) {
   std::ostringstream csv, jsonl;
@@ -162,9 +163,11 @@ int run_batch_repair(const Arguments& args, const std::vector<std::string>& raw_
     Job job;
     job.input = file;
     job.output = out_dir / file.filename();
-    job.report = out_dir / (file.stem().string() + ".report.json");
-    job.summary = out_dir / ("." + file.stem().string() + ".summary");
-    job.log = out_dir / (file.stem().string() + ".log");
+    // Named after the whole file name: sphere.off, sphere.ply and sphere.stl are three jobs.
+    const std::string name = file.filename().string();
+    job.report = out_dir / (name + ".report.json");
+    job.summary = out_dir / ("." + name + ".summary");
+    job.log = out_dir / (name + ".log");
     jobs.push_back(job);
   }
   std::cout << "batch: " << jobs.size() << " mesh files in " << in_dir.string() << ", "

@@ -140,7 +140,14 @@ std::string report_json(const std::string& input, const std::string& output,
 
 // The few figures a batch run collects from each file, one `key=value` per line.
 void write_summary(const std::string& path, int status, const CGAL::Mesh_repair::Repair_result& r,
-                   double seconds) {
+                   const CGAL::Mesh_repair::Defect_counts& before, double seconds) {
+  // Inputs whose only defects are holes: the regression suite expects them closed.
+  const bool only_holes = before.border_cycles > 0 && before.non_manifold_edges == 0 &&
+                          before.non_manifold_vertices == 0 && before.duplicated_faces == 0 &&
+                          before.inconsistent_orientation == 0 && before.degenerate_faces == 0 &&
+                          before.small_gaps == 0 && before.t_junctions == 0 &&
+                          before.overlaps == 0 && r.self_intersections_checked &&
+                          r.self_intersections_input == 0;
   std::ostringstream out;
   out << "status=" << status << "\nfaces_before=" << r.input_faces
       << "\nfaces_after=" << r.output_faces << "\nholes=" << r.holes.holes.size()
@@ -149,8 +156,8 @@ void write_summary(const std::string& path, int status, const CGAL::Mesh_repair:
       << "\nborder_cycles_after=" << r.border_cycles_left << "\nclosed=" << r.closed
       << "\nvalid=" << r.valid << "\nmanifold=" << r.manifold
       << "\nself_intersections_before=" << r.self_intersections_input
-      << "\nself_intersections_after=" << r.self_intersections_output << "\nseconds=" << seconds
-      << '\n';
+      << "\nself_intersections_after=" << r.self_intersections_output
+      << "\nonly_holes_before=" << only_holes << "\nseconds=" << seconds << '\n';
   save_text(path, out.str());
 }
 
@@ -204,7 +211,8 @@ int repair_one(const Arguments& args) {
   if (args.has("--report"))
     save_text(args.get("--report"),
               report_json(input, output, soup, before, after, result, seconds));
-  if (args.has("--summary")) write_summary(args.get("--summary"), status, result, seconds);
+  if (args.has("--summary"))
+    write_summary(args.get("--summary"), status, result, MR::counts(before), seconds);
   print_summary(input, soup, result);
   const auto c0 = MR::counts(before), c1 = MR::counts(after);
   std::cout << "defects before -> after: border cycles " << c0.border_cycles << " -> "

@@ -16,6 +16,11 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <limits>
+#include <memory>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
 
 namespace CGAL {
 namespace Mesh_repair {
@@ -88,9 +93,9 @@ namespace Mesh_repair {
 ///     \cgalParamDefault{`false`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_threads}
-///     \cgalParamDescription{threads; in this version holes are filled one after the other
-///                           and only the self-intersection counts run in parallel (TBB, all
-///                           cores), see doc/automatic_repair.md}
+///     \cgalParamDescription{threads of TBB's pool during the call; in this version holes are
+///                           filled one after the other and only the self-intersection counts
+///                           run in parallel, see doc/automatic_repair.md}
 ///     \cgalParamType{int}
 ///     \cgalParamDefault{0: all cores}
 ///   \cgalParamNEnd
@@ -143,6 +148,14 @@ Repair_result automatic_repair(PolygonMesh& pm,
       choose_parameter(get_parameter(np, internal_np::detect_ring_holes_t{}), true);
   fill.threads = choose_parameter(get_parameter(np, internal_np::number_of_threads_t{}), 0);
 
+#ifdef CGAL_LINKED_WITH_TBB
+  // The parallel steps (CGAL's self-intersection tests) run on TBB's pool; the limit holds
+  // for the duration of the call.
+  std::unique_ptr<tbb::global_control> limit;
+  if (fill.threads > 0)
+    limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                  std::size_t(fill.threads));
+#endif
   return internal::run_repair_pipeline(pm, vpm, options, visitor);
 }
 

@@ -6,7 +6,8 @@
 /// \file fill_holes.h
 /// The hole-filling dispatcher: `fill_hole` fills one hole, `fill_holes` every selected hole,
 /// with the method named by `fill_method`. Whatever the method, every patch is checked with exact
-/// predicates (no self-intersection with itself or its surrounding ring, the hole closed) and a
+/// predicates (no self-intersection with itself, its surrounding ring or any other face of the
+/// mesh near it, earlier patches included; the hole closed) and a
 /// patch that fails is rolled back and reported, never left in the mesh. Ring holes (a hole with
 /// island cycles inside) are detected and bridged into one simple hole first. See
 /// doc/fill_holes.md.
@@ -121,6 +122,7 @@ Hole_fill_report fill_one_hole(Fill_method method, PolygonMesh& pm,
 /// is kept. Advancing front is fast and matches the surrounding density; CGAL's Liepa
 /// triangulation succeeds on the holes where the front gets stuck (very non-planar borders).
 /// Shape prediction falls back to the advancing front, then Liepa (issue "Hole filling II").
+/// Both sequences end with Liepa at C0 (see `Hole_filler::fill`).
 inline std::vector<Fill_method> shape_prediction_sequence() {
   return {Fill_method::shape_prediction, Fill_method::advancing_front, Fill_method::liepa};
 }
@@ -141,7 +143,12 @@ class Hole_filler {
  public:
   Hole_filler(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
               bool check_self_intersections, const NamedParameters& np)
-      : pm_(pm), vpm_(vpm), traits_(traits), check_(check_self_intersections), np_(np) {}
+      : pm_(pm),
+        vpm_(vpm),
+        traits_(traits),
+        check_(check_self_intersections),
+        np_(np),
+        near_faces_(pm, vpm) {}
 
   Hole_description describe(const Group& group) const {
     Hole_description d;
@@ -158,6 +165,7 @@ class Hole_filler {
   /// Fills one group with `method` (`automatic`: each method of `automatic_sequence` in turn).
   Hole_fill_report fill(const Group& group, Fill_method method, Patch& patch) {
     const auto start = Clock::now();
+    if (check_) near_faces_.build();
     const Border_cycle_geometry outer = cycle_geometry(group.outer, pm_, vpm_);
     Hole_fill_report report;
     if (method != Fill_method::automatic && method != Fill_method::shape_prediction) {
@@ -166,9 +174,27 @@ class Hole_filler {
       std::vector<std::string> fallbacks;
       for (Fill_method candidate :
            method == Fill_method::automatic ? automatic_sequence() : shape_prediction_sequence()) {
-        report = attempt(group, candidate, patch);
+        // In a sequence, a stuck front hands over to the next method: the remnant closing
+        // (a triangulation without interior nodes) is far from the surface on the holes that
+        // need it (doc/advancing_front.md), where Liepa's fairing is not.
+        report =
+            candidate == Fill_method::advancing_front
+                ? attempt(group, candidate, patch, parameters::extend(np_).close_stuck_front(false))
+                : attempt(group, candidate, patch);
         if (report.filled) break;
         fallbacks.push_back(std::string(to_string(candidate)) + ": " + report.failure);
+      }
+      if (!report.filled) {
+        // Last resort: a membrane (C0) patch lies in the convex hull of its border (maximum
+        // principle), so it cannot bulge into a facing patch or a nearby sheet the way the
+        // C1/C2 patches can.
+        report = attempt(group, Fill_method::liepa, patch, np_.fairing_continuity(0u));
+        if (report.filled)
+          report.notes.push_back(
+              "filled by Liepa with C0 (membrane) fairing: the faired "
+              "patches of the other methods were rejected");
+        else
+          fallbacks.push_back("liepa (C0): " + report.failure);
       }
       report.fallbacks = fallbacks;
     }
@@ -183,6 +209,7 @@ class Hole_filler {
   std::vector<Hole_fill_report> fill_together(const std::vector<Group>& groups, Fill_method method,
                                               std::vector<Patch>& patches) {
     const auto start = Clock::now();
+    if (check_) near_faces_.build();
     std::vector<Transaction> transactions;
     std::vector<std::vector<Pinch_weld<PolygonMesh>>> welds(groups.size());
     std::vector<Hole_fill_report> reports(groups.size());
@@ -266,6 +293,12 @@ class Hole_filler {
   }
 
   Hole_fill_report attempt(const Group& group, Fill_method method, Patch& patch) {
+    return attempt(group, method, patch, np_);
+  }
+
+  template <class MethodParameters>
+  Hole_fill_report attempt(const Group& group, Fill_method method, Patch& patch,
+                           const MethodParameters& method_np) {
     Transaction transaction(pm_, vpm_, all_cycles(group));
     Hole_fill_report report;
     report.requested = report.used = method;
@@ -279,7 +312,9 @@ class Hole_filler {
     report.filled = true;
     for (halfedge_descriptor cycle : cycles) {
       Patch method_patch;
-      const Hole_fill_report part = fill_one_hole(method, pm_, cycle, method_patch, np_);
+      const Hole_fill_report part = fill_one_hole(
+          method, pm_, cycle, method_patch,
+          parameters::extend(method_np).face_box_cache(check_ ? &near_faces_ : nullptr));
       append(patch, method_patch);
       report.notes.insert(report.notes.end(), part.notes.begin(), part.notes.end());
       if (!part.filled) {
@@ -305,7 +340,8 @@ class Hole_filler {
       report.failure = "the patch leaves border edges open";
     }
     if (report.filled && check_) {
-      const std::size_t pairs = patch_intersections(pm_, patch, vpm_, traits_);
+      const std::size_t pairs =
+          patch_intersections_with_mesh(pm_, patch, vpm_, traits_, near_faces_);
       if (pairs > 0) {
         report.filled = false;
         report.failure =
@@ -316,7 +352,10 @@ class Hole_filler {
       if (report.failure.empty()) report.failure = "the method reported failure";
       transaction.rollback(patch);
       unweld_pinches(pm_, welds);
-    } else if (!welds.empty()) {
+    } else if (check_) {
+      near_faces_.keep(patch, transaction.moved_vertices());
+    }
+    if (report.filled && !welds.empty()) {
       report.notes.push_back("welded " + std::to_string(welds.size()) +
                              " pinch(es) where the border touched itself");
       commit_pinches(pm_, welds);
@@ -340,6 +379,7 @@ class Hole_filler {
   GeomTraits traits_;
   bool check_;
   const NamedParameters& np_;
+  Face_box_cache<PolygonMesh, VertexPointMap> near_faces_;
 };
 
 /// Fills `groups` (all selected unless `select` says otherwise); reports in group order.
@@ -486,8 +526,9 @@ std::vector<Hole_group<typename boost::graph_traits<PolygonMesh>::halfedge_descr
 ///     \cgalParamType{bool} \cgalParamDefault{true}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{check_self_intersections}
-///     \cgalParamDescription{check every patch and its ring with CGAL's exact
-///       `self_intersections`; only turn off for measurements}
+///     \cgalParamDescription{check every patch against itself, its ring and every face of
+///       the mesh whose bounding box meets the patch's (earlier patches included) with CGAL's
+///       exact `self_intersections`; only turn off for measurements}
 ///     \cgalParamType{bool} \cgalParamDefault{true}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{visitor}

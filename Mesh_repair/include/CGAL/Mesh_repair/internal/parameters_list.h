@@ -27,10 +27,12 @@ MESH_REPAIR_PARAMETER(detect_ring_holes)         // bool: bridge islands into th
 MESH_REPAIR_PARAMETER(hole_filter)               // predicate on a hole description
 MESH_REPAIR_PARAMETER(check_self_intersections)  // bool: exact check of every patch
 MESH_REPAIR_PARAMETER(fit_quadric)  // bool: advancing front projects new nodes on a fitted quadric
-MESH_REPAIR_PARAMETER(curvature_objective)     // Curvature_objective, Pernot eq. 8 or 9
-MESH_REPAIR_PARAMETER(objective_nodes)         // Objective_nodes: free, or free and contour
-MESH_REPAIR_PARAMETER(topological_grid)        // Topological_grid: disc or refined Liepa
-MESH_REPAIR_PARAMETER(force_density)           // Force_density: uniform, inverse length, cotangent
+MESH_REPAIR_PARAMETER(close_stuck_front)    // bool: advancing front closes a stuck front's remnant
+MESH_REPAIR_PARAMETER(face_box_cache)       // internal: the dispatcher's Face_box_cache*, shared
+MESH_REPAIR_PARAMETER(curvature_objective)  // Curvature_objective, Pernot eq. 8 or 9
+MESH_REPAIR_PARAMETER(objective_nodes)      // Objective_nodes: free, or free and contour
+MESH_REPAIR_PARAMETER(topological_grid)     // Topological_grid: disc or refined Liepa
+MESH_REPAIR_PARAMETER(force_density)        // Force_density: uniform, inverse length, cotangent
 MESH_REPAIR_PARAMETER(area_normalized_forces)  // bool: objective on f_i / A_i
 MESH_REPAIR_PARAMETER(fill_constraints)        // Fill_constraints<Point>, Pernot 6.4
 MESH_REPAIR_PARAMETER(deformation_report)      // Curvature_deformation_report*, filled on return

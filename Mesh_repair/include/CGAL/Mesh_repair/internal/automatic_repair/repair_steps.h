@@ -21,8 +21,10 @@
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/stitch_borders.h>
 #include <CGAL/Polygon_mesh_processing/shape_predicates.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/helpers.h>
 
+#include <cmath>
 #include <iterator>
 #include <limits>
 #include <set>
@@ -82,16 +84,71 @@ void step_exact_stitching(PolygonMesh& pm, Repair_result& result) {
   timer.count("border_edges_after", double(count_border_halfedges(pm)));
 }
 
+/// Stitches gaps then T-junctions with `tolerance` (negative: derived from the border edge
+/// lengths by stitch_gaps); returns how many nodes were merged or inserted.
+template <class PolygonMesh, class VertexPointMap, class Visitor>
+std::pair<Stitch_result, Stitch_result> stitch_with_tolerance(PolygonMesh& pm, VertexPointMap vpm,
+                                                              double tolerance, Visitor& visitor) {
+  const auto np = parameters::vertex_point_map(vpm).visitor(std::ref(visitor));
+  std::pair<Stitch_result, Stitch_result> r;
+  r.first = tolerance >= 0 ? stitch_gaps(pm, np.merge_tolerance(tolerance)) : stitch_gaps(pm, np);
+  if (r.first.cancelled) return r;
+  r.second = tolerance >= 0 ? repair_t_junctions(pm, np.merge_tolerance(tolerance))
+                            : repair_t_junctions(pm, np);
+  return r;
+}
+
+/// Tolerance stitching moves border nodes by up to the tolerance; on coarse CAD meshes, whose
+/// long border edges give a large derived tolerance, that can push faces through their
+/// neighbours (libcgal-demo's ALSTOM_TEST4: 518 new self-intersecting pairs). So when
+/// self-intersections are checked, stitching is first tried on a copy: a tolerance that adds
+/// self-intersections is replaced by a quarter of the smallest local one, and if that still
+/// adds some, tolerance stitching is skipped (the gaps stay as holes for the filling step).
+/// Returns the tolerance to use (negative: derived) or NaN to skip.
+template <class PolygonMesh, class VertexPointMap>
+double safe_stitching_tolerance(const PolygonMesh& pm, VertexPointMap vpm,
+                                const Repair_options& options, Repair_result& result) {
+  if (!options.detect_self_intersections) return options.merge_tolerance;
+  Step_timer timer(result, "stitching trial");
+  Default_visitor quiet;
+  double tolerance = options.merge_tolerance;
+  for (int attempt = 0; attempt < 2; ++attempt) {
+    PolygonMesh trial;
+    CGAL::copy_face_graph(pm, trial, parameters::vertex_point_map(vpm));
+    const auto stitched =
+        stitch_with_tolerance(trial, get(CGAL::vertex_point, trial), tolerance, quiet);
+    const std::size_t changes = stitched.first.node_merges + stitched.first.t_junctions_split +
+                                stitched.second.t_junctions_split;
+    const std::size_t pairs = changes == 0 ? 0 : count_self_intersections(trial);
+    timer.count("tolerance_" + std::to_string(attempt), stitched.first.merge_tolerance);
+    timer.count("added_self_intersections_" + std::to_string(attempt),
+                pairs > result.self_intersections_input
+                    ? double(pairs - result.self_intersections_input)
+                    : 0.0);
+    if (changes == 0 || pairs <= result.self_intersections_input) return tolerance;
+    timer.step().notes.push_back(
+        "merge tolerance " + std::to_string(stitched.first.merge_tolerance) + " would add " +
+        std::to_string(pairs - result.self_intersections_input) + " self-intersecting pair(s)");
+    tolerance = 0.25 * std::min(stitched.first.min_local_tolerance, stitched.first.merge_tolerance);
+  }
+  timer.count("skipped", 1);
+  timer.step().notes.push_back(
+      "tolerance stitching skipped: every tried tolerance added self-intersections; the gaps are "
+      "left to hole filling");
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
 template <class PolygonMesh, class VertexPointMap, class Visitor>
 void step_tolerance_stitching(PolygonMesh& pm, VertexPointMap vpm, const Repair_options& options,
                               Visitor& visitor, Repair_result& result) {
+  const double tolerance = safe_stitching_tolerance(pm, vpm, options, result);
+  if (std::isnan(tolerance)) return;
   {
     Step_timer timer(result, "tolerance stitching");
     const Stitch_result stitched =
-        options.merge_tolerance >= 0
-            ? stitch_gaps(pm, parameters::merge_tolerance(options.merge_tolerance)
-                                  .vertex_point_map(vpm)
-                                  .visitor(std::ref(visitor)))
+        tolerance >= 0
+            ? stitch_gaps(pm, parameters::merge_tolerance(tolerance).vertex_point_map(vpm).visitor(
+                                  std::ref(visitor)))
             : stitch_gaps(pm, parameters::vertex_point_map(vpm).visitor(std::ref(visitor)));
     timer.count("node_merges", double(stitched.node_merges));
     timer.count("t_junctions_split", double(stitched.t_junctions_split));
@@ -104,10 +161,10 @@ void step_tolerance_stitching(PolygonMesh& pm, VertexPointMap vpm, const Repair_
   if (result.cancelled) return;
   Step_timer timer(result, "T-junctions");
   const Stitch_result repaired =
-      options.merge_tolerance >= 0
-          ? repair_t_junctions(pm, parameters::merge_tolerance(options.merge_tolerance)
-                                       .vertex_point_map(vpm)
-                                       .visitor(std::ref(visitor)))
+      tolerance >= 0
+          ? repair_t_junctions(pm,
+                               parameters::merge_tolerance(tolerance).vertex_point_map(vpm).visitor(
+                                   std::ref(visitor)))
           : repair_t_junctions(pm, parameters::vertex_point_map(vpm).visitor(std::ref(visitor)));
   timer.count("t_junctions_split", double(repaired.t_junctions_split));
   timer.count("edges_stitched", double(repaired.edges_stitched));

@@ -15,12 +15,15 @@
 #include <CGAL/Mesh_repair/internal/hole_filling/border_cycles.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Bbox_3.h>
+#include <CGAL/intersections.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <initializer_list>
 #include <queue>
 #include <string>
@@ -43,6 +46,10 @@ struct Front_input {
   /// Edges that already exist between two border points (mesh edges, border edges included):
   /// the front must not create them again.
   std::vector<std::pair<std::size_t, std::size_t>> existing_edges;
+  /// The mesh around the hole (a few rings of faces), which no new triangle may meet: each
+  /// corner is a border point (index < points.size()) or `context_points[i - points.size()]`.
+  std::vector<Vec3> context_points;
+  std::vector<std::array<std::size_t, 3>> context_triangles;
 };
 
 struct Front_options {
@@ -51,6 +58,15 @@ struct Front_options {
   double merge_factor = 0.5;        ///< a new node within this times the edge length is merged
   double max_triangles_factor = 4;  ///< give up beyond this times the expected triangle count
   int smoothing_iterations = 3;     ///< tangential relaxation of the new nodes after closing
+  /// A new triangle may not have a 3D angle below this (degrees), except the angle at the node
+  /// of a one-triangle rule, which the front's own corner imposes: no sliver, no node placed
+  /// on a front edge (which the tangent-plane test, on rounded projections, cannot see).
+  double min_angle_deg = 3;
+  /// When the front is stuck, close each remaining loop (up to `max_remnant_edges` edges) with
+  /// the minimum-area triangulation of the loop's points restricted to triangles that pass the
+  /// same exact 3D test as the front's (see `close_remnant`).
+  bool close_remnant = false;
+  std::size_t max_remnant_edges = 200;
 };
 
 /// `points` starts with the input's border points; `triangles` index into it, in creation order
@@ -62,6 +78,12 @@ struct Front_triangulation {
   std::size_t border_points = 0;
   bool closed = false;
   std::string failure;
+  /// When the front fails: its open loops (indices into `points`, each loop in front order,
+  /// i.e. counterclockwise around the part of the region still uncovered), for a caller that
+  /// closes them another way (see `close_front_remnant` in advancing_front.h).
+  std::vector<std::vector<std::size_t>> remnant;
+  /// Edges of the loops closed by `Front_options::close_remnant` (0 when the front closed).
+  std::size_t remnant_edges = 0;
 };
 
 /// Finishes the position of a new node (candidate, normal of the node it grows from).
@@ -108,8 +130,33 @@ class Advancing_front {
     const double expected = std::max(norm(vector_area), perimeter * mean_length_) /
                             (0.433 * mean_length_ * mean_length_);
     max_triangles_ = std::size_t(options_.max_triangles_factor * expected) + 4 * n + 16;
+    {
+      const std::size_t guess = std::min<std::size_t>(std::size_t(expected) + 2 * n, 1u << 22);
+      edges_.reserve(2 * guess + input.existing_edges.size());
+      directed_.reserve(2 * n + 16);
+      grid_.reserve(guess / 2 + n);
+      triangle_grid_.reserve(guess + input.context_triangles.size());
+      stored_.reserve(guess + input.context_triangles.size());
+      visit_stamp_.reserve(guess + input.context_triangles.size());
+      triangles_.reserve(guess);
+      points_.reserve(guess / 2 + points_.size());
+      normal_sums_.reserve(guess / 2 + points_.size());
+      out_edges_.reserve(guess / 2 + points_.size());
+      front_.reserve(3 * guess);
+      stamps_.reserve(3 * guess);
+    }
     for (const auto& e : input.existing_edges) edges_.insert(key(e.first, e.second));
     for (std::size_t p = 0; p < points_.size(); ++p) insert_in_grid(p);
+    const std::size_t border = input.points.size();
+    for (const auto& t : input.context_triangles) {
+      std::array<std::size_t, 3> ids;
+      std::array<Vec3, 3> corners;
+      for (int k = 0; k < 3; ++k) {
+        ids[k] = t[k] < border ? t[k] : std::size_t(-1) - (t[k] - border);
+        corners[k] = t[k] < border ? input.points[t[k]] : input.context_points[t[k] - border];
+      }
+      store_triangle(ids, corners);
+    }
     for (std::size_t k = 0; k < n; ++k) add_front_edge(input.cycle[k], input.cycle[(k + 1) % n]);
     for (std::size_t k = 0; k < n; ++k) {
       front_[k].next = int((k + 1) % n);
@@ -150,6 +197,18 @@ class Advancing_front {
     }
     result.closed = alive_ == 0;
     if (result.closed) smooth();
+    if (!result.closed) result.remnant = open_loops();
+    if (!result.closed && options_.close_remnant) {
+      result.remnant_edges = 0;
+      for (const auto& loop : result.remnant) result.remnant_edges += loop.size();
+      bool all = true;
+      for (const auto& loop : result.remnant) all = all && close_remnant(loop);
+      if (all) {
+        result.closed = true;
+        result.failure.clear();
+        result.remnant.clear();
+      }
+    }
     result.points = std::move(points_);
     result.triangles = std::move(triangles_);
     result.border_points = border_count_;
@@ -209,6 +268,7 @@ class Advancing_front {
   }
   void add_triangle(std::size_t a, std::size_t b, std::size_t c) {
     triangles_.push_back({a, b, c});
+    store_triangle({a, b, c}, {points_[a], points_[b], points_[c]});
     edges_.insert(key(a, b));
     edges_.insert(key(b, c));
     edges_.insert(key(c, a));
@@ -294,7 +354,9 @@ class Advancing_front {
   /// Exact checks of a fan at node v in its tangent plane: every triangle counterclockwise, no
   /// front point inside or on a triangle, no new edge meeting a front edge away from its ends;
   /// and no new edge that already exists in the mesh or the patch.
-  bool fan_is_valid(std::size_t v, const Fan& fan, std::initializer_list<int> consumed) const {
+  bool fan_is_valid(std::size_t v, const Fan& fan, std::initializer_list<int> consumed,
+                    bool check_shape = true) const {
+    if (check_shape && !fan_is_well_shaped(fan)) return false;
     const Tangent_frame frame = frame_at(v);
     double radius = 0;
     std::vector<std::pair<std::size_t, std::size_t>> new_edges;
@@ -339,6 +401,186 @@ class Advancing_front {
         }
       }
     }
+    // 3D: the candidates of the whole fan are gathered once.
+    std::vector<std::array<Vec3, 3>> corners;
+    for (const auto& t : fan.triangles)
+      corners.push_back({position(fan, t[0]), position(fan, t[1]), position(fan, t[2])});
+    return !meets_stored_triangles(fan.triangles, corners);
+  }
+
+  // ---- exact 3D test against the triangles already there --------------------------------------
+  using Point_3 = Epick::Point_3;
+  struct Stored_triangle {
+    std::array<std::size_t, 3> ids;
+    std::array<Point_3, 3> corners;
+    CGAL::Bbox_3 box;
+  };
+  static Point_3 point_3(const Vec3& p) { return Point_3(p[0], p[1], p[2]); }
+
+  /// Cells of the triangle grid overlapped by the bounding box of `corners`.
+  template <class F>
+  void for_cells(const std::array<Vec3, 3>& corners, F f) const {
+    Vec3 lo = corners[0], hi = corners[0];
+    for (int k = 1; k < 3; ++k) {
+      for (int d = 0; d < 3; ++d) {
+        lo[d] = std::min(lo[d], corners[k][d]);
+        hi[d] = std::max(hi[d], corners[k][d]);
+      }
+    }
+    for_cells(lo, hi, f);
+  }
+  template <class F>
+  void for_cells(const Vec3& lo_point, const Vec3& hi_point, F f) const {
+    std::array<std::int64_t, 3> lo, hi;
+    for (int d = 0; d < 3; ++d) {
+      lo[d] = std::int64_t(std::floor(lo_point[d] / cell_));
+      hi[d] = std::int64_t(std::floor(hi_point[d] / cell_));
+      if (hi[d] - lo[d] > 64) return;  // absurd extent: not stored, never a candidate
+    }
+    for (std::int64_t i = lo[0]; i <= hi[0]; ++i)
+      for (std::int64_t j = lo[1]; j <= hi[1]; ++j)
+        for (std::int64_t k = lo[2]; k <= hi[2]; ++k)
+          f((std::uint64_t(i & 0x1fffff) << 42) | (std::uint64_t(j & 0x1fffff) << 21) |
+            std::uint64_t(k & 0x1fffff));
+  }
+
+  void store_triangle(const std::array<std::size_t, 3>& ids, const std::array<Vec3, 3>& corners) {
+    Stored_triangle stored{
+        ids, {point_3(corners[0]), point_3(corners[1]), point_3(corners[2])}, CGAL::Bbox_3()};
+    stored.box = stored.corners[0].bbox() + stored.corners[1].bbox() + stored.corners[2].bbox();
+    if (CGAL::collinear(stored.corners[0], stored.corners[1], stored.corners[2])) return;
+    const std::size_t index = stored_.size();
+    stored_.push_back(stored);
+    visit_stamp_.push_back(0);
+    for_cells(corners, [&](std::uint64_t cell) { triangle_grid_[cell].push_back(index); });
+  }
+
+  /// Exact test (Epick's filtered predicates) of a new triangle against the stored triangles
+  /// whose cells it overlaps. Triangles sharing an edge meet when they fold onto each other
+  /// (coplanar, same side); sharing a vertex, when the edge opposite it in one meets the other.
+  bool meets_stored_triangle(const std::array<std::size_t, 3>& ids,
+                             const std::array<Vec3, 3>& corners) const {
+    const std::array<Point_3, 3> t{point_3(corners[0]), point_3(corners[1]), point_3(corners[2])};
+    if (CGAL::collinear(t[0], t[1], t[2])) return true;
+    const CGAL::Bbox_3 box = t[0].bbox() + t[1].bbox() + t[2].bbox();
+    ++visit_;
+    bool meets = false;
+    for_cells(corners, [&](std::uint64_t cell) {
+      if (meets) return;
+      const auto it = triangle_grid_.find(cell);
+      if (it == triangle_grid_.end()) return;
+      for (std::size_t index : it->second) {
+        if (visit_stamp_[index] == visit_) continue;
+        visit_stamp_[index] = visit_;
+        if (!CGAL::do_overlap(box, stored_[index].box)) continue;
+        if (triangles_meet(ids, t, stored_[index])) {
+          meets = true;
+          return;
+        }
+      }
+    });
+    return meets;
+  }
+
+  /// `meets_stored_triangle` for several triangles at once (a fan): one pass over the cells.
+  bool meets_stored_triangles(const std::vector<std::array<std::size_t, 3>>& ids,
+                              const std::vector<std::array<Vec3, 3>>& corners) const {
+    std::vector<std::array<Point_3, 3>> triangles;
+    std::vector<CGAL::Bbox_3> boxes;
+    Vec3 lo = corners[0][0], hi = corners[0][0];
+    for (const auto& c : corners) {
+      triangles.push_back({point_3(c[0]), point_3(c[1]), point_3(c[2])});
+      const auto& t = triangles.back();
+      if (CGAL::collinear(t[0], t[1], t[2])) return true;
+      boxes.push_back(t[0].bbox() + t[1].bbox() + t[2].bbox());
+      for (int k = 0; k < 3; ++k) {
+        for (int d = 0; d < 3; ++d) {
+          lo[d] = std::min(lo[d], c[k][d]);
+          hi[d] = std::max(hi[d], c[k][d]);
+        }
+      }
+    }
+    ++visit_;
+    bool meets = false;
+    for_cells(lo, hi, [&](std::uint64_t cell) {
+      if (meets) return;
+      const auto it = triangle_grid_.find(cell);
+      if (it == triangle_grid_.end()) return;
+      for (std::size_t index : it->second) {
+        if (visit_stamp_[index] == visit_) continue;
+        visit_stamp_[index] = visit_;
+        const Stored_triangle& stored = stored_[index];
+        for (std::size_t k = 0; k < triangles.size(); ++k) {
+          if (CGAL::do_overlap(boxes[k], stored.box) &&
+              triangles_meet(ids[k], triangles[k], stored)) {
+            meets = true;
+            return;
+          }
+        }
+      }
+    });
+    return meets;
+  }
+
+  static bool triangles_meet(const std::array<std::size_t, 3>& ids, const std::array<Point_3, 3>& t,
+                             const Stored_triangle& s) {
+    int shared = 0, ia = -1, ib = -1, ja = -1, jb = -1;
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) {
+        if (ids[i] != s.ids[j]) continue;
+        ++shared;
+        if (ia < 0) {
+          ia = i;
+          ja = j;
+        } else {
+          ib = i;
+          jb = j;
+        }
+      }
+    }
+    if (shared >= 3) return true;  // the same triangle twice
+    if (shared == 2) {
+      const Point_3& r = t[3 - ia - ib];
+      const Point_3& q = s.corners[3 - ja - jb];
+      return CGAL::orientation(t[ia], t[ib], r, q) == CGAL::COPLANAR &&
+             CGAL::coplanar_orientation(t[ia], t[ib], r, q) == CGAL::POSITIVE;
+    }
+    if (shared == 1) {
+      // Quick exact exits: the two other corners of one triangle strictly on one side of the
+      // other's plane, so the triangles meet at the shared corner only.
+      const Point_3 &t1 = t[(ia + 1) % 3], &t2 = t[(ia + 2) % 3];
+      const CGAL::Orientation o1 = CGAL::orientation(s.corners[0], s.corners[1], s.corners[2], t1);
+      if (o1 != CGAL::COPLANAR &&
+          o1 == CGAL::orientation(s.corners[0], s.corners[1], s.corners[2], t2))
+        return false;
+      const Point_3 &s1 = s.corners[(ja + 1) % 3], &s2 = s.corners[(ja + 2) % 3];
+      const CGAL::Orientation o2 = CGAL::orientation(t[0], t[1], t[2], s1);
+      if (o2 != CGAL::COPLANAR && o2 == CGAL::orientation(t[0], t[1], t[2], s2)) return false;
+      const Epick::Segment_3 opposite_t(t[(ia + 1) % 3], t[(ia + 2) % 3]);
+      const Epick::Segment_3 opposite_s(s.corners[(ja + 1) % 3], s.corners[(ja + 2) % 3]);
+      return CGAL::do_intersect(opposite_t,
+                                Epick::Triangle_3(s.corners[0], s.corners[1], s.corners[2])) ||
+             CGAL::do_intersect(opposite_s, Epick::Triangle_3(t[0], t[1], t[2]));
+    }
+    return CGAL::do_intersect(Epick::Triangle_3(t[0], t[1], t[2]),
+                              Epick::Triangle_3(s.corners[0], s.corners[1], s.corners[2]));
+  }
+
+  /// 3D angles of the fan's triangles (a, v, b): none below `min_angle_deg`, except the angle at
+  /// v (index 1) of a single triangle, which is the front's corner itself.
+  bool fan_is_well_shaped(const Fan& fan) const {
+    const double limit = std::cos(options_.min_angle_deg * CGAL_PI / 180.0);
+    for (const auto& t : fan.triangles) {
+      for (int k = 0; k < 3; ++k) {
+        if (k == 1 && fan.triangles.size() == 1) continue;
+        const Vec3& o = position(fan, t[k]);
+        const Vec3 u = sub(position(fan, t[(k + 1) % 3]), o);
+        const Vec3 w = sub(position(fan, t[(k + 2) % 3]), o);
+        const double nu = norm(u), nw = norm(w);
+        if (!(nu > 0) || !(nw > 0)) return false;
+        if (dot(u, w) > limit * nu * nw) return false;  // angle below the limit
+      }
+    }
     return true;
   }
 
@@ -380,7 +622,7 @@ class Advancing_front {
     const int out = front_[in].next, last = front_[out].next;
     const std::size_t a = front_[in].from, v = front_[in].to, b = front_[out].to;
     Fan fan{{{a, v, b}}, {}};
-    if (!fan_is_valid(v, fan, {in, out, last})) return false;
+    if (!fan_is_valid(v, fan, {in, out, last}, false)) return false;  // forced: the loop's last
     kill(in);
     kill(out);
     kill(last);
@@ -552,6 +794,83 @@ class Advancing_front {
     return true;
   }
 
+  /// Closes one loop of the stuck front: the triangulation of its polygon (no new point) of
+  /// least total area among those whose every triangle passes the exact 3D test against the
+  /// triangles already there and creates no existing edge (dynamic programming over the
+  /// polygon, O(n^3)); well-shaped triangles first, any non-degenerate ones if that fails.
+  /// Triangles are emitted so that each is attached to the border of its time.
+  bool close_remnant(const std::vector<std::size_t>& loop) {
+    const std::size_t n = loop.size();
+    if (n < 3 || n > options_.max_remnant_edges) return false;
+    const double infinite = std::numeric_limits<double>::infinity();
+    for (bool shaped : {true, false}) {
+      std::vector<double> weight(n * n, infinite);
+      std::vector<int> apex(n * n, -1);
+      for (std::size_t i = 0; i + 1 < n; ++i) weight[i * n + i + 1] = 0;
+      const auto valid = [&](std::size_t i, std::size_t k, std::size_t j) {
+        const std::size_t a = loop[i], b = loop[k], c = loop[j];
+        if (a == b || b == c || a == c) return false;
+        for (const auto& chord :
+             {std::make_pair(i, k), std::make_pair(k, j), std::make_pair(i, j)}) {
+          if (chord.second == chord.first + 1 || (chord.first == 0 && chord.second == n - 1))
+            continue;  // a loop edge
+          if (edges_.count(key(loop[chord.first], loop[chord.second]))) return false;
+        }
+        Fan fan{{{a, b, c}}, {}};
+        if (shaped && !fan_is_well_shaped(fan)) return false;
+        return !meets_stored_triangle({a, b, c}, {points_[a], points_[b], points_[c]});
+      };
+      for (std::size_t gap = 2; gap < n; ++gap) {
+        for (std::size_t i = 0; i + gap < n; ++i) {
+          const std::size_t j = i + gap;
+          for (std::size_t k = i + 1; k < j; ++k) {
+            const double w = weight[i * n + k] + weight[k * n + j];
+            if (!(w < weight[i * n + j])) continue;
+            if (!valid(i, k, j)) continue;
+            const Vec3 area = cross(sub(points_[loop[k]], points_[loop[i]]),
+                                    sub(points_[loop[j]], points_[loop[i]]));
+            const double total = w + 0.5 * norm(area);
+            if (total < weight[i * n + j]) {
+              weight[i * n + j] = total;
+              apex[i * n + j] = int(k);
+            }
+          }
+        }
+      }
+      if (apex[n - 1] < 0) continue;
+      std::vector<std::pair<std::size_t, std::size_t>> stack{{0, n - 1}};
+      while (!stack.empty()) {
+        const auto [i, j] = stack.back();
+        stack.pop_back();
+        if (j < i + 2) continue;
+        const std::size_t k = std::size_t(apex[i * n + j]);
+        add_triangle(loop[i], loop[k], loop[j]);
+        stack.emplace_back(k, j);
+        stack.emplace_back(i, k);
+      }
+      return true;
+    }
+    return false;
+  }
+
+  /// The loops of the live front edges.
+  std::vector<std::vector<std::size_t>> open_loops() const {
+    std::vector<std::vector<std::size_t>> loops;
+    std::vector<char> seen(front_.size(), 0);
+    for (std::size_t start = 0; start < front_.size(); ++start) {
+      if (!front_[start].alive || seen[start]) continue;
+      std::vector<std::size_t> loop;
+      int e = int(start);
+      while (!seen[e] && front_[e].alive) {
+        seen[e] = 1;
+        loop.push_back(front_[e].from);
+        e = front_[e].next;
+      }
+      loops.push_back(std::move(loop));
+    }
+    return loops;
+  }
+
   // ---- after closing --------------------------------------------------------------------------
   /// Tangential relaxation of the new nodes towards their neighbours' centroid, each move
   /// finished by the projection: evens out the triangles without shrinking the patch.
@@ -598,6 +917,10 @@ class Advancing_front {
   std::priority_queue<Corner, std::vector<Corner>, std::greater<Corner>> queue_;
   std::vector<int> blocked_;
   std::vector<std::array<std::size_t, 3>> triangles_;
+  std::vector<Stored_triangle> stored_;
+  std::unordered_map<std::uint64_t, std::vector<std::size_t>> triangle_grid_;
+  mutable std::vector<std::uint32_t> visit_stamp_;
+  mutable std::uint32_t visit_ = 0;
   std::size_t alive_ = 0, border_count_ = 0, max_triangles_ = 0;
   double mean_length_ = 1, cell_ = 1;
   Vec3 hole_normal_{0, 0, 1};

@@ -9,9 +9,12 @@
 
 #include <CGAL/Mesh_repair/hole_filling/fill_result.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/advancing_front_core.h>
+#include <CGAL/Mesh_repair/internal/hole_filling/patch_check.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
 
+#include <algorithm>
+#include <array>
 #include <unordered_map>
 #include <vector>
 
@@ -20,11 +23,14 @@ namespace Mesh_repair {
 namespace internal {
 
 /// The front's input for the border cycle of `h`, and the mesh vertex of each input point.
+/// `near_faces`, when given (the dispatcher's cache of face boxes), replaces the pass over every
+/// face of the mesh that finds the faces near the hole: one scan of boxes instead of geometry.
 template <class PolygonMesh, class VertexPointMap>
 Front_input front_input_from_border(
     const PolygonMesh& pm, VertexPointMap vpm,
     typename boost::graph_traits<PolygonMesh>::halfedge_descriptor h,
-    std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor>& point_vertices) {
+    std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor>& point_vertices,
+    const Face_box_cache<PolygonMesh, VertexPointMap>* near_faces = nullptr) {
   using vertex_descriptor = typename boost::graph_traits<PolygonMesh>::vertex_descriptor;
   Front_input input;
   std::unordered_map<vertex_descriptor, std::size_t> index;
@@ -54,6 +60,78 @@ Front_input front_input_from_border(
       if (other != index.end() && other->second > k)
         input.existing_edges.emplace_back(k, other->second);
     }
+  }
+  // The faces within two rings of the border: no new triangle may meet them.
+  using face_descriptor = typename boost::graph_traits<PolygonMesh>::face_descriptor;
+  std::unordered_map<vertex_descriptor, std::size_t> context_index(index);
+  std::vector<vertex_descriptor> layer(point_vertices), reached(point_vertices);
+  std::unordered_map<vertex_descriptor, bool> in_ring;
+  for (vertex_descriptor v : layer) in_ring[v] = true;
+  {
+    std::vector<vertex_descriptor> next_layer;
+    for (vertex_descriptor v : layer) {
+      for (auto around : halfedges_around_target(v, pm)) {
+        if (in_ring.emplace(source(around, pm), true).second)
+          next_layer.push_back(source(around, pm));
+      }
+    }
+    reached.insert(reached.end(), next_layer.begin(), next_layer.end());
+  }
+  std::unordered_map<face_descriptor, bool> seen_face;
+  const auto add_context_face = [&](face_descriptor f) {
+    if (f == boost::graph_traits<PolygonMesh>::null_face() || !seen_face.emplace(f, true).second)
+      return;
+    std::array<std::size_t, 3> corners{0, 0, 0};
+    int count = 0;
+    for (auto c : halfedges_around_face(halfedge(f, pm), pm)) {
+      const vertex_descriptor w = target(c, pm);
+      auto found = context_index.find(w);
+      if (found == context_index.end()) {
+        found = context_index.emplace(w, input.points.size() + input.context_points.size()).first;
+        input.context_points.push_back(to_array(get(vpm, w)));
+      }
+      if (count < 3) corners[std::size_t(count)] = found->second;
+      ++count;
+    }
+    if (count == 3) input.context_triangles.push_back(corners);
+  };
+  for (vertex_descriptor v : reached) {
+    for (face_descriptor f : faces_around_target(halfedge(v, pm), pm)) add_context_face(f);
+  }
+  // Any other face of the mesh that a patch bulging by up to half the border's diameter could
+  // meet (a thin part of the mesh facing the hole, another patch): one pass over the faces.
+  Vec3 lo = input.points.front(), hi = lo;
+  for (const Vec3& p : input.points) {
+    for (int d = 0; d < 3; ++d) {
+      lo[d] = std::min(lo[d], p[d]);
+      hi[d] = std::max(hi[d], p[d]);
+    }
+  }
+  const double margin = 0.5 * norm(sub(hi, lo));
+  for (int d = 0; d < 3; ++d) {
+    lo[d] -= margin;
+    hi[d] += margin;
+  }
+  if (near_faces != nullptr) {
+    const CGAL::Bbox_3 box(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]);
+    for (face_descriptor f : near_faces->overlapping(box, seen_face)) add_context_face(f);
+    return input;
+  }
+  for (face_descriptor f : faces(pm)) {
+    if (seen_face.count(f)) continue;
+    bool overlaps = true;
+    Vec3 flo{0, 0, 0}, fhi{0, 0, 0};
+    bool first = true;
+    for (auto c : halfedges_around_face(halfedge(f, pm), pm)) {
+      const Vec3 p = to_array(get(vpm, target(c, pm)));
+      for (int d = 0; d < 3; ++d) {
+        flo[d] = first ? p[d] : std::min(flo[d], p[d]);
+        fhi[d] = first ? p[d] : std::max(fhi[d], p[d]);
+      }
+      first = false;
+    }
+    for (int d = 0; d < 3; ++d) overlaps = overlaps && flo[d] <= hi[d] && fhi[d] >= lo[d];
+    if (overlaps) add_context_face(f);
   }
   return input;
 }

@@ -9,6 +9,7 @@
 
 #include <CGAL/Mesh_repair/hole_filling/fill_result.h>
 
+#include <CGAL/Bbox_3.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -49,6 +50,15 @@ class Patch_transaction {
         }
       }
     }
+  }
+
+  /// The vertices whose position the method changed (kept patches only; after a rollback they
+  /// are back where they were).
+  std::vector<vertex_descriptor> moved_vertices() const {
+    std::vector<vertex_descriptor> moved;
+    for (const auto& saved : saved_)
+      if (get(vpm_, saved.first) != saved.second) moved.push_back(saved.first);
+    return moved;
   }
 
   /// Removes the faces and vertices of `patch` (last added first, so each removal undoes one
@@ -92,15 +102,15 @@ std::vector<typename boost::graph_traits<PolygonMesh>::face_descriptor> patch_wi
   return range;
 }
 
-/// Number of pairs of intersecting triangles (a degenerate patch face counts as a pair with
-/// itself) among the patch and its ring that involve at least one patch face, decided with the
-/// exact predicates of `traits` by CGAL's `self_intersections`. Intersections between two ring
-/// faces existed before the fill and are not counted.
+/// Number of pairs of intersecting triangles of `range` (a degenerate face counts as a pair with
+/// itself) that involve at least one face of `patch`, decided with the exact predicates of
+/// `traits` by CGAL's `self_intersections`. Pairs of two other faces existed before the fill.
 template <class PolygonMesh, class VertexPointMap, class GeomTraits>
-std::size_t patch_intersections(const PolygonMesh& pm, const Fill_patch<PolygonMesh>& patch,
-                                VertexPointMap vpm, const GeomTraits& traits) {
+std::size_t pairs_involving_patch(
+    const std::vector<typename boost::graph_traits<PolygonMesh>::face_descriptor>& range,
+    const PolygonMesh& pm, const Fill_patch<PolygonMesh>& patch, VertexPointMap vpm,
+    const GeomTraits& traits) {
   using face_descriptor = typename boost::graph_traits<PolygonMesh>::face_descriptor;
-  const auto range = patch_with_ring(pm, patch);
   std::vector<std::pair<face_descriptor, face_descriptor>> pairs;
   CGAL::Polygon_mesh_processing::self_intersections(
       range, pm, std::back_inserter(pairs),
@@ -109,6 +119,95 @@ std::size_t patch_intersections(const PolygonMesh& pm, const Fill_patch<PolygonM
   return std::size_t(std::count_if(pairs.begin(), pairs.end(), [&](const auto& pair) {
     return in_patch.count(pair.first) > 0 || in_patch.count(pair.second) > 0;
   }));
+}
+
+/// Bounding boxes of the faces a new patch must not meet: every face of the mesh when the
+/// filling starts, then the faces of each kept patch. A patch's ring check sees only the faces
+/// around its border; two patches bulging into each other (two holes facing each other across a
+/// thin gap, as in libcgal-demo's blobby_3cc) or a patch crossing a far part of the mesh are
+/// found only by looking at every face near the patch. The boxes are computed once (one pass
+/// over the mesh) so each patch costs one scan of boxes, not of geometry.
+template <class PolygonMesh, class VertexPointMap>
+class Face_box_cache {
+  using GT = boost::graph_traits<PolygonMesh>;
+  using face_descriptor = typename GT::face_descriptor;
+  using vertex_descriptor = typename GT::vertex_descriptor;
+
+ public:
+  Face_box_cache(const PolygonMesh& pm, VertexPointMap vpm) : pm_(pm), vpm_(vpm) {}
+
+  /// Takes the faces of the mesh as it is now. Call it before the first patch is added: a
+  /// patch present at that time would stay in the cache after a rollback removed it.
+  void build() {
+    if (built_) return;
+    built_ = true;
+    faces_.reserve(num_faces(pm_));
+    boxes_.reserve(num_faces(pm_));
+    for (face_descriptor f : faces(pm_)) add(f);
+  }
+
+  /// The faces (not in `exclude`) whose box overlaps `box`.
+  template <class FaceSet>
+  std::vector<face_descriptor> overlapping(const CGAL::Bbox_3& box, const FaceSet& exclude) const {
+    CGAL_precondition(built_);
+    std::vector<face_descriptor> found;
+    std::unordered_set<face_descriptor> seen;  // a moved face is in the cache twice
+    for (std::size_t i = 0; i < faces_.size(); ++i) {
+      if (CGAL::do_overlap(boxes_[i], box) && exclude.count(faces_[i]) == 0 &&
+          seen.insert(faces_[i]).second)
+        found.push_back(faces_[i]);
+    }
+    return found;
+  }
+
+  /// Records a kept patch: its faces join the cache, and the faces around the vertices it moved
+  /// join again with their new boxes (the stale box only adds a candidate, never hides one).
+  template <class Patch>
+  void keep(const Patch& patch, const std::vector<vertex_descriptor>& moved) {
+    CGAL_precondition(built_);
+    for (face_descriptor f : patch.faces) add(f);
+    for (vertex_descriptor v : moved) {
+      if (halfedge(v, pm_) == GT::null_halfedge()) continue;
+      for (face_descriptor f : faces_around_target(halfedge(v, pm_), pm_))
+        if (f != GT::null_face()) add(f);
+    }
+  }
+
+  CGAL::Bbox_3 face_box(face_descriptor f) const {
+    CGAL::Bbox_3 box;
+    for (auto h : halfedges_around_face(halfedge(f, pm_), pm_))
+      box += get(vpm_, target(h, pm_)).bbox();
+    return box;
+  }
+
+ private:
+  void add(face_descriptor f) {
+    faces_.push_back(f);
+    boxes_.push_back(face_box(f));
+  }
+
+  const PolygonMesh& pm_;
+  VertexPointMap vpm_;
+  bool built_ = false;
+  std::vector<face_descriptor> faces_;
+  std::vector<CGAL::Bbox_3> boxes_;
+};
+
+/// Pairs of intersecting faces with at least one patch face, among the patch, its ring and
+/// every other face of the mesh near the patch (`cache`), by CGAL's exact `self_intersections`.
+template <class PolygonMesh, class VertexPointMap, class GeomTraits>
+std::size_t patch_intersections_with_mesh(const PolygonMesh& pm,
+                                          const Fill_patch<PolygonMesh>& patch, VertexPointMap vpm,
+                                          const GeomTraits& traits,
+                                          Face_box_cache<PolygonMesh, VertexPointMap>& cache) {
+  using face_descriptor = typename boost::graph_traits<PolygonMesh>::face_descriptor;
+  std::vector<face_descriptor> range = patch_with_ring(pm, patch);
+  std::unordered_set<face_descriptor> in_range(range.begin(), range.end());
+  CGAL::Bbox_3 box;
+  for (face_descriptor f : patch.faces) box += cache.face_box(f);
+  const std::vector<face_descriptor> near = cache.overlapping(box, in_range);
+  range.insert(range.end(), near.begin(), near.end());
+  return pairs_involving_patch(range, pm, patch, vpm, traits);
 }
 
 }  // namespace internal
