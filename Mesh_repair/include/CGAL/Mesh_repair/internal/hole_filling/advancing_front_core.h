@@ -345,7 +345,7 @@ class Advancing_front {
   /// A candidate fan: triangles to add, each listed (a, b, c) counterclockwise.
   struct Fan {
     std::vector<std::array<std::size_t, 3>> triangles;
-    std::vector<Vec3> new_points;  // positions of the placeholder indices >= points_.size()
+    std::vector<Vec3> new_points;  // positions of the fan's new nodes, indexed from points_.size()
   };
   const Vec3& position(const Fan& fan, std::size_t p) const {
     return p < points_.size() ? points_[p] : fan.new_points[p - points_.size()];
