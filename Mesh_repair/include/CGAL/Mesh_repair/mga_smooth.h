@@ -28,7 +28,7 @@ namespace Mesh_repair {
 struct Mga_smooth_result {
   std::size_t free_nodes = 0;
   std::size_t border_nodes = 0;   ///< fixed: on a border
-  std::size_t feature_nodes = 0;  ///< fixed: on a feature edge (dihedral angle)
+  std::size_t feature_nodes = 0;  ///< fixed: on a feature line (sharp edges, spurs excluded)
   std::size_t constrained_nodes =
       0;                           ///< fixed by `vertex_is_constrained_map` or a face of degree > 4
   std::size_t moves = 0;           ///< accepted node moves over all sweeps
@@ -113,6 +113,8 @@ Mga_smooth_result smooth_with(PolygonMesh& pm, const NamedParameters& np,
       int(choose_parameter(get_parameter(np, internal_np::max_generations_t()), 3));
   const double feature_angle_deg =
       choose_parameter(get_parameter(np, internal_np::feature_angle_deg_t()), 120.0);
+  const double cubic_surface_weight =
+      choose_parameter(get_parameter(np, internal_np::cubic_surface_weight_t()), 0.5);
 
   // Index arrays of the mesh.
   visitor.start_step("cubic surface");
@@ -144,7 +146,8 @@ Mga_smooth_result smooth_with(PolygonMesh& pm, const NamedParameters& np,
     }
   }
   mesh.build_incidence();
-  const Cubic_surface surface(mesh.points, primary_triangles(mesh, big_faces), feature_angle_deg);
+  const Cubic_surface surface(mesh.points, primary_triangles(mesh, big_faces), feature_angle_deg,
+                              std::min(1.0, std::max(0.0, cubic_surface_weight)));
   for (std::size_t v = 0; v < mesh.points.size(); ++v) {
     if (mesh.incidence_start[v] == mesh.incidence_start[v + 1]) {
       fixed[v] = true;  // isolated vertex: nothing to smooth
@@ -187,13 +190,16 @@ Mga_smooth_result smooth_with(PolygonMesh& pm, const NamedParameters& np,
 /// algorithm of Chen, Hsu, Lin (section 3): for each free node and each adjacent element, a
 /// micro-GA over the design variables (r1, r2) of eq. 1-3 maximises the sum of alpha (eq. 4-5,
 /// triangles) and beta (eq. 7-8, quads) of the node's elements, each trial position being mapped
-/// onto a cubic surface rebuilt from the input mesh (section 2.2); the best position over the
-/// elements is taken if it raises the fitness and folds no element (exact orientation test).
+/// onto a cubic surface rebuilt from the input mesh (section 2.2) or, by default, half-way between
+/// that surface and the input triangles (`cubic_surface_weight`, doc/mga_smooth.md); the best
+/// position over the elements is taken if it raises the fitness and folds no element (exact
+/// orientation test).
 /// Trial positions that would lower the node's worst element below min(its current quality, 0.5)
 /// are infeasible, so the worst quality is protected (the paper's sum alone lets it drop).
 /// A move must raise the node's fitness by at least 1e-3; a node is searched again only after it
 /// or a node of its elements moved; sweeps repeat until no node moves. Border nodes, nodes on
-/// feature edges and constrained nodes never move; the connectivity never changes.
+/// feature lines and constrained nodes never move (a sharp spur of one or two edges that no other
+/// sharp edge continues is noise, not a feature line); the connectivity never changes.
 /// Reproducible for a seed, and identical for any number of threads.
 ///
 /// \tparam PolygonMesh a model of `FaceListGraph` (faces of degree 3 or 4; the vertices of larger
@@ -212,6 +218,11 @@ Mga_smooth_result smooth_with(PolygonMesh& pm, const NamedParameters& np,
 ///   \cgalParamNBegin{feature_angle_deg} \cgalParamDescription{an edge whose dihedral angle is
 ///     below this is a feature edge; its nodes are fixed} \cgalParamType{double}
 ///     \cgalParamDefault{120} \cgalParamNEnd
+///   \cgalParamNBegin{cubic_surface_weight} \cgalParamDescription{where trial positions are
+///     mapped: flat + w (cubic - flat) at the same barycentric coordinates of a primary triangle;
+///     0 = the input triangles, 1 = the cubic surface (the paper's mapping, closest to the smooth
+///     surface the input samples), 0.5 = half-way, within half the input's chordal deviation of
+///     both} \cgalParamType{double in [0, 1]} \cgalParamDefault{0.5} \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_is_constrained_map} \cgalParamDescription{nodes that must not move}
 ///     \cgalParamType{readable vertex property map to bool} \cgalParamDefault{none} \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_threads} \cgalParamDescription{threads (TBB) over independent

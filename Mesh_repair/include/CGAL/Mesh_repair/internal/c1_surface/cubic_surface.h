@@ -44,13 +44,16 @@ class Cubic_surface {
   };
 
   /// `feature_angle_deg`: an edge whose dihedral angle is below it is a feature edge.
-  Cubic_surface(std::vector<Vec3> points, std::vector<Triangle> triangles, double feature_angle_deg)
+  /// `cubic_weight` w: the surface points are flat + w (cubic - flat), between the flat primary
+  /// triangle (w = 0) and its cubic patch (w = 1), at the same barycentric coordinates.
+  Cubic_surface(std::vector<Vec3> points, std::vector<Triangle> triangles, double feature_angle_deg,
+                double cubic_weight = 1.0)
       : points_(std::move(points)), triangles_(std::move(triangles)) {
     build_adjacency();
     mark_feature_edges(feature_angle_deg);
     compute_corner_normals();
     for (std::size_t t = 0; t < triangles_.size(); ++t) {
-      nets_.push_back(control_net(int(t)));
+      nets_.push_back(blend_with_flat(control_net(int(t)), cubic_weight));
       frames_.push_back(plane_frame(int(t)));
     }
   }
@@ -86,7 +89,7 @@ class Cubic_surface {
     return location;
   }
 
-  /// The patch point at a location.
+  /// The surface point at a location: flat + w (patch - flat).
   Vec3 evaluate(const Location& location) const {
     const auto& net = nets_[location.triangle];
     const double u = location.b[0], v = location.b[1], w = location.b[2];
@@ -158,10 +161,46 @@ class Cubic_surface {
       const int other = neighbour_[slot];
       if (other < 0) continue;
       const int t = int(slot / 3);
-      if (dot(face_normal_[t], face_normal_[other]) < cos_limit) {
-        feature_edge_[slot] = true;
-        feature_vertex_[triangles_[t][(slot + 1) % 3]] = true;
-        feature_vertex_[triangles_[t][(slot + 2) % 3]] = true;
+      if (dot(face_normal_[t], face_normal_[other]) < cos_limit) feature_edge_[slot] = true;
+    }
+    prune_feature_spurs();
+    for (std::size_t slot = 0; slot < neighbour_.size(); ++slot) {
+      if (!feature_edge_[slot]) continue;
+      feature_vertex_[triangles_[slot / 3][(slot + 1) % 3]] = true;
+      feature_vertex_[triangles_[slot / 3][(slot + 2) % 3]] = true;
+    }
+  }
+
+  // A feature is a line of sharp edges. A sharp edge that sticks out of a vertex where no other
+  // sharp edge continues it is a spur: on a scan, noise makes many such short dangling pieces
+  // (femur.off: 610 vertices end a single sharp edge, fandisk.off: 2). Spurs of up to
+  // `max_spur_edges` edges are unmarked (removed from their free end, so a spur that reaches a
+  // junction or a longer line keeps that line intact); longer dangling lines are kept, and a line
+  // that ends on the border does not dangle.
+  void prune_feature_spurs() {
+    constexpr int max_spur_edges = 2;
+    std::vector<int> degree(points_.size(), 0);
+    auto ends = [&](std::size_t slot) {
+      const Triangle& t = triangles_[slot / 3];
+      return std::array<int, 2>{t[(slot + 1) % 3], t[(slot + 2) % 3]};
+    };
+    for (std::size_t slot = 0; slot < neighbour_.size(); ++slot)
+      if (feature_edge_[slot] && int(slot / 3) < neighbour_[slot])  // each edge once
+        for (int v : ends(slot)) ++degree[v];
+    for (int pass = 0; pass < max_spur_edges; ++pass) {
+      std::vector<std::size_t> spur_slots;
+      for (std::size_t slot = 0; slot < neighbour_.size(); ++slot) {
+        if (!feature_edge_[slot]) continue;
+        const auto e = ends(slot);
+        auto free_end = [&](int v) { return degree[v] == 1 && !border_vertex_[v]; };
+        if (free_end(e[0]) || free_end(e[1])) spur_slots.push_back(slot);
+      }
+      if (spur_slots.empty()) break;
+      for (std::size_t slot : spur_slots) {
+        if (!feature_edge_[slot]) continue;
+        if (int(slot / 3) < neighbour_[slot])
+          for (int v : ends(slot)) --degree[v];
+        feature_edge_[slot] = false;
       }
     }
   }
@@ -269,6 +308,24 @@ class Cubic_surface {
     const Vec3 centroid = (1.0 / 3.0) * (p0 + p1 + p2);
     b[9] = edge_mean + 0.5 * (edge_mean - centroid);
     return b;
+  }
+
+  // flat + w (patch - flat) is itself a cubic Bezier triangle: the flat triangle, degree-elevated
+  // to three, has its ordinates at the thirds of the edges and at the centroid, so blending the
+  // nets blends the surfaces (no cost per evaluation). Both patches of an edge blend the same
+  // edge ordinates with the same chord points: still no crack.
+  static Net blend_with_flat(Net net, double w) {
+    if (w == 1) return net;
+    const Vec3 p[3] = {net[0], net[1], net[2]};
+    // Ordinates 3..8: b210 b201 b120 b021 b102 b012, i.e. next to corner a toward corner b.
+    const int a[6] = {0, 0, 1, 1, 2, 2}, b[6] = {1, 2, 0, 2, 0, 1};
+    for (int i = 0; i < 6; ++i) {
+      const Vec3 flat = (1.0 / 3.0) * (2.0 * p[a[i]] + p[b[i]]);
+      net[3 + i] = flat + w * (net[3 + i] - flat);
+    }
+    const Vec3 centroid = (1.0 / 3.0) * (p[0] + p[1] + p[2]);
+    net[9] = centroid + w * (net[9] - centroid);
+    return net;
   }
 
   // What the barycentric coordinates of a point projected on a triangle's plane need, computed
