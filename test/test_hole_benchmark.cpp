@@ -130,6 +130,31 @@ TEST(HoleBenchmark, MetricsAreZeroWhenTheRemovedPatchIsPutBack) {
   }
 }
 
+// The curvature jump across the contour (Pernot 7): about 0 for the sphere's own faces put back,
+// about the sphere's mean curvature x diagonal (1 x 2 sqrt(3)) for a flat refined patch.
+TEST(HoleBenchmark, CurvatureJumpIsSmallForTheTruthAndTheSphereCurvatureForAFlatPatch) {
+  Mesh original = analytic(MR::Analytic_surface::sphere);
+  Mesh mesh = original;
+  const auto punched =
+      MR::punch_holes(mesh, MR::parameters::number_of_holes(2).hole_radius(0.1).random_seed(8));
+  ASSERT_EQ(punched.holes.size(), 2u);
+  for (const auto& hole : punched.holes) {
+    std::vector<Mesh::Face_index> faces;
+    std::vector<Mesh::Vertex_index> vertices;
+    PMP::triangulate_and_refine_hole(mesh, hole.border_halfedge, std::back_inserter(faces),
+                                     std::back_inserter(vertices));
+    ASSERT_GT(vertices.size(), 3u);
+  }
+  for (const auto& hole : punched.holes) {
+    const double truth =
+        MR::measure_filled_hole(original, hole, punched.bbox_diagonal).curvature_jump;
+    const double flat = MR::measure_filled_hole(mesh, hole, punched.bbox_diagonal).curvature_jump;
+    EXPECT_GT(flat, 2.0);
+    EXPECT_LT(flat, 5.0);
+    EXPECT_LT(truth, 0.1 * flat);
+  }
+}
+
 TEST(HoleBenchmark, ErrorNormsAreOrderedE1AtMostE2AtMostEinfAfterLiepaFill) {
   Mesh mesh = analytic(MR::Analytic_surface::sphere);
   const auto punched =

@@ -210,8 +210,10 @@ void run_scaling(const std::vector<std::size_t>& sizes) {
     }
     std::cout << "| " << n << " | " << seconds[0] << " | " << seconds[1] << " | " << seconds[2]
               << " (assembly " << report.assembly_seconds << ", factorisation "
-              << report.factorization_seconds << ", solve " << report.solve_seconds << ") | "
-              << report.system_nonzeros << " | " << seconds[1] / seconds[2] << " |\n";
+              << report.factorization_seconds << ", solve " << report.solve_seconds << ", "
+              << report.preconditioned_iterations << " CG iterations) | " << report.system_nonzeros
+              << " (factor " << report.factor_nonzeros << ") | " << seconds[1] / seconds[2]
+              << " |\n";
   }
 }
 

@@ -126,6 +126,7 @@ Hole_fill_metrics measure_filled_hole(
   impl::measure_distances(pm, vpm, patch, hole, exact_distance, diagonal, m);
   impl::measure_hausdorff(pm, vpm, patch, hole, diagonal, m);
   impl::measure_normal_deviation(pm, vpm, hole, m);
+  impl::measure_curvature_jump(pm, vpm, patch, hole, diagonal, m);
   impl::measure_quality(pm, vpm, patch, m);
   return m;
 }

@@ -170,10 +170,16 @@ struct Curvature_deformation_report {
   std::size_t contour_vertices = 0;  ///< blocked vertices of the inner meshes
   std::size_t objective_terms = 0;   ///< squared forces or force differences summed
   std::size_t system_nonzeros = 0;   ///< of the symmetric matrix factorised
+  std::size_t factor_nonzeros = 0;   ///< of its LDL^T factor (nested-dissection order)
   std::size_t factorizations = 0;    ///< sparse factorisations (1 per call)
   std::size_t constraints_applied = 0;
   std::size_t constraints_dropped = 0;  ///< attached only to blocked vertices, cannot move
   double max_constraint_residual = 0;   ///< model units
+  /// Times the force densities and areas were re-measured on the solved shape (1 by default).
+  std::size_t weight_remeasurements = 0;
+  /// Conjugate-gradient iterations of the re-measured system, preconditioned with the
+  /// factorisation of the first (summed over the coordinates).
+  std::size_t preconditioned_iterations = 0;
   double assembly_seconds = 0, factorization_seconds = 0, solve_seconds = 0;
 };
 

@@ -42,6 +42,8 @@ struct System_options {
   Objective_nodes nodes = Objective_nodes::free_and_contour_nodes;
   Force_density density = Force_density::uniform;
   bool area_normalized = false;  // sum f_i / A_i (a pressure) instead of f_i
+  // Re-measure the densities and areas on the first solution and solve again (deform.h).
+  bool remeasure_weights = true;
 };
 
 /// A sparse linear combination of node positions.

@@ -6,6 +6,7 @@
 // Fidelity of a filled hole against the removed patch (or an exact surface distance).
 // doc/bench_holes.md defines every number.
 
+#include <CGAL/Mesh_repair/internal/curvature_variation/measures.h>
 #include <CGAL/Mesh_repair/internal/hole_benchmark/punch.h>
 #include <CGAL/Mesh_repair/internal/hole_benchmark/types.h>
 #include <CGAL/Mesh_repair/quality.h>
@@ -192,6 +193,30 @@ void measure_normal_deviation(const PolygonMesh& pm, VertexPointMap vpm,
   if (count == 0) return;
   m.normal_deviation_max_deg = maximum;
   m.normal_deviation_mean_deg = sum / double(count);
+}
+
+// Curvature jump across the hole's contour (Pernot 7, the measure of curvature_variation's
+// benchmark): the contour is every vertex of the hole's border, the patch side the other vertices
+// of the patch faces.
+template <class PolygonMesh, class VertexPointMap, class Point>
+void measure_curvature_jump(
+    const PolygonMesh& pm, VertexPointMap vpm,
+    const std::vector<typename boost::graph_traits<PolygonMesh>::face_descriptor>& patch,
+    const Punched_hole<PolygonMesh, Point>& hole, double diagonal, Hole_fill_metrics& m) {
+  using vertex_descriptor = typename boost::graph_traits<PolygonMesh>::vertex_descriptor;
+  std::set<vertex_descriptor> contour;
+  for (const auto& entry : hole.border) {
+    contour.insert(source(entry.first, pm));
+    contour.insert(target(entry.first, pm));
+  }
+  Fill_patch<PolygonMesh> fill;
+  fill.faces = patch;
+  std::set<vertex_descriptor> inner;
+  for (auto f : patch)
+    for (auto v : CGAL::vertices_around_face(halfedge(f, pm), pm))
+      if (!contour.count(v) && inner.insert(v).second) fill.vertices.push_back(v);
+  if (fill.vertices.empty()) return;  // no inner vertex: no patch-side curvature
+  m.curvature_jump = curvature_variation::contour_curvature_jump(pm, vpm, fill, diagonal);
 }
 
 template <class PolygonMesh, class VertexPointMap>

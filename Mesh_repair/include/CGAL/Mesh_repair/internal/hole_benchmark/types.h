@@ -93,6 +93,9 @@ struct Hole_fill_metrics {
   double e1_nodes = nan, e2_nodes = nan, einf_nodes = nan;  ///< at new vertices (thesis 5.7)
   double hausdorff = nan, hausdorff_rel = nan;              ///< symmetric, patch vs removed patch
   double normal_deviation_max_deg = nan, normal_deviation_mean_deg = nan;
+  /// Mean over the contour vertices of |mean curvature of their patch-side neighbours - of their
+  /// outside neighbours| x diagonal (Pernot 7; 0 for a curvature-continuous fill).
+  double curvature_jump = nan;
   double min_alpha = nan, mean_alpha = nan, min_angle_deg = nan;
   std::size_t self_intersections = 0;  ///< intersecting face pairs with a patch face
 };
