@@ -6,8 +6,11 @@
 // triangles around a circle of N border vertices), so both methods see the same border and the
 // same surroundings and the mesh copy outside the timed region is cheap. Each method is timed
 // alone (no dispatcher check), on a fresh copy per iteration; `fill_hole_advancing_front` checks
-// its own patch exactly (it must, to choose between its fallbacks), BM_advancing_front_unchecked
-// turns that check off.
+// its own patch exactly (it must, to choose between its fallbacks): by the front's own exact
+// tests when they cover the patch (`Front_triangulation::exactly_checked`, the case here), by
+// the whole-mesh check otherwise. BM_advancing_front_unchecked turns the whole-mesh check off
+// (so it differs only when the front's tests do not cover the patch). CGAL's function is called
+// directly: its time contains nothing of ours.
 // Results and the command: doc/benchmarks.md, section "fill_holes (advancing front vs Liepa)".
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Mesh_repair/hole_filling/advancing_front.h>

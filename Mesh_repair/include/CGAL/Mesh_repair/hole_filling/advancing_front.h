@@ -128,6 +128,21 @@ inline Front_size border_density(const Front_input& input) {
   };
 }
 
+/// True when the triangle (a, b, c) has an angle below `limit_deg` (< 90), or a repeated point:
+/// `smallest_angle_deg(a, b, c) < limit_deg` without its three arctangents.
+inline bool has_angle_below(const Vec3& a, const Vec3& b, const Vec3& c, double limit_deg) {
+  const double tangent = std::tan(limit_deg * CGAL_PI / 180.0);
+  const Vec3* corners[3] = {&a, &b, &c};
+  for (int k = 0; k < 3; ++k) {
+    const Vec3 u = sub(*corners[(k + 1) % 3], *corners[k]);
+    const Vec3 w = sub(*corners[(k + 2) % 3], *corners[k]);
+    if (!(norm(u) > 0) || !(norm(w) > 0)) return true;
+    const double cosine_part = dot(u, w);  // |u||w| cos, positive below 90 degrees
+    if (cosine_part > 0 && norm(cross(u, w)) < tangent * cosine_part) return true;
+  }
+  return false;
+}
+
 /// Smallest angle (degrees) of the triangle (a, b, c); 0 for a repeated point.
 template <class Point>
 double smallest_angle_deg(const Point& a, const Point& b, const Point& c) {
@@ -195,6 +210,7 @@ Hole_fill_report fill_hole_advancing_front(
   const bool check =
       choose_parameter(get_parameter(np, internal_np::check_self_intersections_t()), true);
   internal::Front_options options;
+  options.size_from_position_only = true;  // border_density ignores the adjacent edge length
   options.smoothing_iterations =
       int(choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 3u));
 
@@ -303,7 +319,10 @@ Hole_fill_report fill_hole_advancing_front(
       transaction.rollback(attempt_patch);
       return Outcome::failed;
     }
-    if (check) {
+    // A patch the front has checked itself, exactly and completely (every triangle in its final
+    // position against the patch, the ring and every mesh face near the hole:
+    // `Front_triangulation::exactly_checked`), needs no second check.
+    if (check && !triangulation.exactly_checked) {
       const std::size_t pairs =
           internal::patch_intersections_with_mesh(pm, attempt_patch, vpm, traits, face_cache);
       if (pairs > 0) {
@@ -315,10 +334,9 @@ Hole_fill_report fill_hole_advancing_front(
       }
     }
     if (!accept_degenerate) {
-      for (auto f : attempt_patch.faces) {
-        const auto h = halfedge(f, pm);
-        if (internal::smallest_angle_deg(get(vpm, source(h, pm)), get(vpm, target(h, pm)),
-                                         get(vpm, target(next(h, pm), pm))) < degenerate_deg) {
+      for (const auto& t : triangulation.triangles) {
+        if (internal::has_angle_below(triangulation.points[t[0]], triangulation.points[t[1]],
+                                      triangulation.points[t[2]], degenerate_deg)) {
           transaction.rollback(attempt_patch);
           return Outcome::degenerate;
         }

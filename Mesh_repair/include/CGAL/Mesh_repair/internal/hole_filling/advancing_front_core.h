@@ -50,6 +50,12 @@ struct Front_input {
   /// corner is a border point (index < points.size()) or `context_points[i - points.size()]`.
   std::vector<Vec3> context_points;
   std::vector<std::array<std::size_t, 3>> context_triangles;
+  /// True when `context_triangles` holds every face of the mesh whose bounding box overlaps the
+  /// box [`context_lo`, `context_hi`] and every face sharing a vertex with the border (all of
+  /// them triangles): a patch inside that box, each of whose triangles passed the front's exact
+  /// test, then meets no face of the mesh (see `Front_triangulation::exactly_checked`).
+  bool context_complete = false;
+  Vec3 context_lo{0, 0, 0}, context_hi{0, 0, 0};
 };
 
 struct Front_options {
@@ -67,6 +73,9 @@ struct Front_options {
   /// same exact 3D test as the front's (see `close_remnant`).
   bool close_remnant = false;
   std::size_t max_remnant_edges = 200;
+  /// The size function ignores its second argument (the mean adjacent front edge length), so
+  /// the front computes it once per node.
+  bool size_from_position_only = false;
 };
 
 /// `points` starts with the input's border points; `triangles` index into it, in creation order
@@ -84,6 +93,38 @@ struct Front_triangulation {
   std::vector<std::vector<std::size_t>> remnant;
   /// Edges of the loops closed by `Front_options::close_remnant` (0 when the front closed).
   std::size_t remnant_edges = 0;
+  /// True when the closed triangulation has been checked exactly, in its final positions, as
+  /// the whole-mesh check `patch_intersections_with_mesh` would check it: every triangle was
+  /// tested with exact predicates against every other triangle of the patch and every context
+  /// triangle whose bounding box it overlaps (each new triangle when it was added, each moved
+  /// one when the relaxation moved a node), the input's context is complete and every new point
+  /// lies in its box. A caller may then skip its own check of the patch (see
+  /// doc/advancing_front.md, "Exact checks").
+  bool exactly_checked = false;
+};
+
+/// A list of at most N elements without allocation (the front's fans have at most 3 triangles).
+template <class T, std::size_t N>
+class Small_list {
+ public:
+  Small_list() = default;
+  Small_list(std::initializer_list<T> items) {
+    for (const T& item : items) push_back(item);
+  }
+  void push_back(const T& item) {
+    CGAL_assertion(size_ < N);
+    items_[size_++] = item;
+  }
+  std::size_t size() const { return size_; }
+  bool empty() const { return size_ == 0; }
+  const T& operator[](std::size_t i) const { return items_[i]; }
+  T& operator[](std::size_t i) { return items_[i]; }
+  const T* begin() const { return items_.data(); }
+  const T* end() const { return items_.data() + size_; }
+
+ private:
+  std::array<T, N> items_{};
+  std::size_t size_ = 0;
 };
 
 /// Finishes the position of a new node (candidate, normal of the node it grows from).
@@ -99,6 +140,53 @@ class Advancing_front {
     std::size_t from, to;
     int prev, next;
     bool alive;
+    int next_out;  // the next live front edge leaving `from` (list headed by first_out_[from])
+  };
+
+  /// A set of undirected edges (keys from `key`): open addressing, no allocation per edge.
+  class Edge_set {
+   public:
+    void reserve(std::size_t n) {
+      std::size_t capacity = 16;
+      while (capacity < 2 * n) capacity *= 2;
+      if (capacity > slots_.size()) rehash(capacity);
+    }
+    void insert(std::uint64_t k) {
+      if (2 * (size_ + 1) > slots_.size()) rehash(std::max<std::size_t>(16, 2 * slots_.size()));
+      std::size_t i = slot(k);
+      while (slots_[i] != empty && slots_[i] != k) i = (i + 1) & (slots_.size() - 1);
+      if (slots_[i] == empty) {
+        slots_[i] = k;
+        ++size_;
+      }
+    }
+    bool count(std::uint64_t k) const {
+      if (slots_.empty()) return false;
+      std::size_t i = slot(k);
+      while (slots_[i] != empty) {
+        if (slots_[i] == k) return true;
+        i = (i + 1) & (slots_.size() - 1);
+      }
+      return false;
+    }
+
+   private:
+    static constexpr std::uint64_t empty = ~std::uint64_t(0);
+    std::size_t slot(std::uint64_t k) const {
+      k ^= k >> 33;
+      k *= 0xff51afd7ed558ccdULL;
+      k ^= k >> 33;
+      return std::size_t(k) & (slots_.size() - 1);
+    }
+    void rehash(std::size_t capacity) {
+      std::vector<std::uint64_t> old(capacity, empty);
+      old.swap(slots_);
+      size_ = 0;
+      for (std::uint64_t k : old)
+        if (k != empty) insert(k);
+    }
+    std::vector<std::uint64_t> slots_;
+    std::size_t size_ = 0;
   };
   struct Corner {  // the corner at the target of edge `in`, between `in` and its next
     double angle;
@@ -113,7 +201,7 @@ class Advancing_front {
       : project_(std::move(project)), size_(std::move(size)), options_(options) {
     points_ = input.points;
     normal_sums_ = input.normals;
-    out_edges_.resize(points_.size());
+    first_out_.assign(points_.size(), none);
     double perimeter = 0;
     Vec3 vector_area{0, 0, 0};
     const std::size_t n = input.cycle.size();
@@ -127,13 +215,13 @@ class Advancing_front {
     mean_length_ = n > 0 ? perimeter / double(n) : 1.0;
     if (!(mean_length_ > 0)) mean_length_ = 1.0;
     cell_ = 2.0 * mean_length_;
+    triangle_cell_ = cell_;
     const double expected = std::max(norm(vector_area), perimeter * mean_length_) /
                             (0.433 * mean_length_ * mean_length_);
     max_triangles_ = std::size_t(options_.max_triangles_factor * expected) + 4 * n + 16;
     {
       const std::size_t guess = std::min<std::size_t>(std::size_t(expected) + 2 * n, 1u << 22);
       edges_.reserve(2 * guess + input.existing_edges.size());
-      directed_.reserve(2 * n + 16);
       grid_.reserve(guess / 2 + n);
       triangle_grid_.reserve(guess + input.context_triangles.size());
       stored_.reserve(guess + input.context_triangles.size());
@@ -141,12 +229,14 @@ class Advancing_front {
       triangles_.reserve(guess);
       points_.reserve(guess / 2 + points_.size());
       normal_sums_.reserve(guess / 2 + points_.size());
-      out_edges_.reserve(guess / 2 + points_.size());
+      first_out_.reserve(guess / 2 + points_.size());
       front_.reserve(3 * guess);
       stamps_.reserve(3 * guess);
     }
     for (const auto& e : input.existing_edges) edges_.insert(key(e.first, e.second));
-    for (std::size_t p = 0; p < points_.size(); ++p) insert_in_grid(p);
+    context_complete_ = input.context_complete;
+    context_lo_ = input.context_lo;
+    context_hi_ = input.context_hi;
     const std::size_t border = input.points.size();
     for (const auto& t : input.context_triangles) {
       std::array<std::size_t, 3> ids;
@@ -209,6 +299,13 @@ class Advancing_front {
         result.remnant.clear();
       }
     }
+    result.exactly_checked = result.closed && context_complete_ && !unchecked_;
+    for (std::size_t p = border_count_; p < points_.size() && result.exactly_checked; ++p) {
+      for (int d = 0; d < 3; ++d) {
+        if (!(context_lo_[d] <= points_[p][d] && points_[p][d] <= context_hi_[d]))
+          result.exactly_checked = false;
+      }
+    }
     result.points = std::move(points_);
     result.triangles = std::move(triangles_);
     result.border_points = border_count_;
@@ -221,33 +318,48 @@ class Advancing_front {
     if (a > b) std::swap(a, b);
     return (std::uint64_t(a) << 32) | std::uint64_t(b);
   }
-  static std::uint64_t directed_key(std::size_t a, std::size_t b) {
-    return (std::uint64_t(a) << 32) | std::uint64_t(b);
+  /// The live front edge from a to b, or `none`.
+  int front_edge_between(std::size_t a, std::size_t b) const {
+    if (a >= first_out_.size()) return none;
+    for (int e = first_out_[a]; e != none; e = front_[e].next_out)
+      if (front_[e].to == b) return e;
+    return none;
   }
+  bool on_front(std::size_t p) const { return first_out_[p] != none; }
   std::uint64_t cell_key(const Vec3& p) const {
     auto c = [&](double x) {
       return std::uint64_t(std::int64_t(std::floor(x / cell_)) & 0x1fffff);
     };
     return (c(p[0]) << 42) | (c(p[1]) << 21) | c(p[2]);
   }
+  // The grid holds the front's points only: a point joins it with its first outgoing front edge
+  // and leaves it with its last, so proximity searches never scan the patch's interior.
   void insert_in_grid(std::size_t p) { grid_[cell_key(points_[p])].push_back(p); }
+  void remove_from_grid(std::size_t p) {
+    auto& cell = grid_[cell_key(points_[p])];
+    const auto it = std::find(cell.begin(), cell.end(), p);
+    CGAL_assertion(it != cell.end());
+    *it = cell.back();
+    cell.pop_back();
+  }
 
   int add_front_edge(std::size_t from, std::size_t to) {
-    front_.push_back({from, to, none, none, true});
+    const int e = int(front_.size());
+    front_.push_back({from, to, none, none, true, first_out_[from]});
     stamps_.push_back(0);
-    const int e = int(front_.size() - 1);
-    directed_.emplace(directed_key(from, to), e);
     edges_.insert(key(from, to));
-    out_edges_[from].push_back(e);
+    if (first_out_[from] == none) insert_in_grid(from);
+    first_out_[from] = e;
     ++alive_;
     return e;
   }
   void kill(int e) {
     Front_edge& edge = front_[e];
     edge.alive = false;
-    directed_.erase(directed_key(edge.from, edge.to));
-    auto& out = out_edges_[edge.from];
-    out.erase(std::find(out.begin(), out.end(), e));
+    int* link = &first_out_[edge.from];
+    while (*link != e) link = &front_[*link].next_out;
+    *link = edge.next_out;
+    if (first_out_[edge.from] == none) remove_from_grid(edge.from);
     --alive_;
   }
   void link(int a, int b) {
@@ -262,13 +374,12 @@ class Advancing_front {
   std::size_t new_point(const Vec3& p) {
     points_.push_back(p);
     normal_sums_.push_back({0, 0, 0});
-    out_edges_.emplace_back();
-    insert_in_grid(points_.size() - 1);
+    first_out_.push_back(none);
     return points_.size() - 1;
   }
   void add_triangle(std::size_t a, std::size_t b, std::size_t c) {
     triangles_.push_back({a, b, c});
-    store_triangle({a, b, c}, {points_[a], points_[b], points_[c]});
+    triangle_stored_.push_back(store_triangle({a, b, c}, {points_[a], points_[b], points_[c]}));
     edges_.insert(key(a, b));
     edges_.insert(key(b, c));
     edges_.insert(key(c, a));
@@ -315,23 +426,37 @@ class Advancing_front {
     return f;
   }
 
-  /// Front points within `radius` of `center` and not far off the tangent plane.
-  std::vector<std::size_t> nearby_front_points(const Tangent_frame& frame, double radius) const {
-    std::vector<std::size_t> found;
+  /// Front points within `radius` of `center` and not far off the tangent plane (in a buffer
+  /// that the next call overwrites).
+  const std::vector<std::size_t>& nearby_front_points(const Tangent_frame& frame,
+                                                      double radius) const {
+    std::vector<std::size_t>& found = near_points_;
+    found.clear();
     const Vec3& c = frame.origin;
-    const int reach = int(std::ceil(radius / cell_));
     const auto base = [&](double x) { return std::int64_t(std::floor(x / cell_)); };
-    const std::int64_t cx = base(c[0]), cy = base(c[1]), cz = base(c[2]);
-    for (std::int64_t i = cx - reach; i <= cx + reach; ++i) {
-      for (std::int64_t j = cy - reach; j <= cy + reach; ++j) {
-        for (std::int64_t k = cz - reach; k <= cz + reach; ++k) {
+    std::array<std::int64_t, 3> lo, hi;
+    for (int d = 0; d < 3; ++d) {
+      lo[d] = base(c[d] - radius);
+      hi[d] = base(c[d] + radius);
+      if (hi[d] - lo[d] > 64) {  // absurd radius: every front point is a candidate
+        for (std::size_t p = 0; p < points_.size(); ++p) {
+          const Vec3 v = sub(points_[p], c);
+          if (on_front(p) && dot(v, v) <= radius * radius &&
+              std::abs(frame.height(points_[p])) <= 0.5 * radius)
+            found.push_back(p);
+        }
+        return found;
+      }
+    }
+    for (std::int64_t i = lo[0]; i <= hi[0]; ++i) {
+      for (std::int64_t j = lo[1]; j <= hi[1]; ++j) {
+        for (std::int64_t k = lo[2]; k <= hi[2]; ++k) {
           const std::uint64_t key = (std::uint64_t(i & 0x1fffff) << 42) |
                                     (std::uint64_t(j & 0x1fffff) << 21) |
                                     std::uint64_t(k & 0x1fffff);
           const auto it = grid_.find(key);
           if (it == grid_.end()) continue;
           for (std::size_t p : it->second) {
-            if (out_edges_[p].empty()) continue;
             const Vec3 d = sub(points_[p], c);
             if (dot(d, d) <= radius * radius && std::abs(frame.height(points_[p])) <= 0.5 * radius)
               found.push_back(p);
@@ -344,8 +469,8 @@ class Advancing_front {
 
   /// A candidate fan: triangles to add, each listed (a, b, c) counterclockwise.
   struct Fan {
-    std::vector<std::array<std::size_t, 3>> triangles;
-    std::vector<Vec3> new_points;  // positions of the fan's new nodes, indexed from points_.size()
+    Small_list<std::array<std::size_t, 3>, 3> triangles;
+    Small_list<Vec3, 2> new_points;  // positions of the fan's new nodes, from points_.size()
   };
   const Vec3& position(const Fan& fan, std::size_t p) const {
     return p < points_.size() ? points_[p] : fan.new_points[p - points_.size()];
@@ -359,53 +484,65 @@ class Advancing_front {
     if (check_shape && !fan_is_well_shaped(fan)) return false;
     const Tangent_frame frame = frame_at(v);
     double radius = 0;
-    std::vector<std::pair<std::size_t, std::size_t>> new_edges;
+    Small_list<std::pair<std::size_t, std::size_t>, 9> new_edges;
+    Small_list<Epick::Segment_2, 9> new_segments;     // the new edges in the tangent plane
+    Small_list<std::array<Point_2, 3>, 3> projected;  // the fan's triangles in the tangent plane
     for (const auto& t : fan.triangles) {
       for (int k = 0; k < 3; ++k) {
         radius = std::max(radius, norm(sub(position(fan, t[k]), points_[v])));
         const std::size_t s = t[k], e = t[(k + 1) % 3];
-        const auto front_edge = directed_.find(directed_key(s, e));
-        if (front_edge != directed_.end()) {  // the fan may only consume the edges it replaces
-          if (std::find(consumed.begin(), consumed.end(), front_edge->second) == consumed.end())
+        const int front_edge = front_edge_between(s, e);
+        if (front_edge != none) {  // the fan may only consume the edges it replaces
+          if (std::find(consumed.begin(), consumed.end(), front_edge) == consumed.end())
             return false;
           continue;
         }
         if (s < points_.size() && e < points_.size() && edges_.count(key(s, e))) return false;
-        new_edges.emplace_back(s, e);
+        new_edges.push_back({s, e});
+        new_segments.push_back(Epick::Segment_2(frame(position(fan, s)), frame(position(fan, e))));
       }
       const Point_2 p0 = frame(position(fan, t[0])), p1 = frame(position(fan, t[1])),
                     p2 = frame(position(fan, t[2]));
       if (CGAL::orientation(p0, p1, p2) != CGAL::LEFT_TURN) return false;
+      projected.push_back({p0, p1, p2});
     }
-    const std::vector<std::size_t> near = nearby_front_points(frame, 1.5 * radius + 1e-300);
-    for (std::size_t x : near) {
+    for (std::size_t x : nearby_front_points(frame, 1.5 * radius + 1e-300)) {
       const Point_2 px = frame(points_[x]);
-      for (const auto& t : fan.triangles) {
+      for (std::size_t i = 0; i < fan.triangles.size(); ++i) {
+        const auto& t = fan.triangles[i];
         if (x == t[0] || x == t[1] || x == t[2]) continue;
-        const Point_2 p0 = frame(position(fan, t[0])), p1 = frame(position(fan, t[1])),
-                      p2 = frame(position(fan, t[2]));
+        const Point_2 &p0 = projected[i][0], &p1 = projected[i][1], &p2 = projected[i][2];
         if (CGAL::orientation(p0, p1, px) != CGAL::RIGHT_TURN &&
             CGAL::orientation(p1, p2, px) != CGAL::RIGHT_TURN &&
             CGAL::orientation(p2, p0, px) != CGAL::RIGHT_TURN)
           return false;
       }
-      for (int e : out_edges_[x]) {
+      for (int e = first_out_[x]; e != none; e = front_[e].next_out) {
         const std::size_t y = front_[e].to;
         const Point_2 py = frame(points_[y]);
-        for (const auto& edge : new_edges) {
+        for (std::size_t i = 0; i < new_edges.size(); ++i) {
+          const auto& edge = new_edges[i];
           if (edge.first == x || edge.first == y || edge.second == x || edge.second == y) continue;
-          if (CGAL::do_intersect(Epick::Segment_2(frame(position(fan, edge.first)),
-                                                  frame(position(fan, edge.second))),
-                                 Epick::Segment_2(px, py)))
-            return false;
+          if (CGAL::do_intersect(new_segments[i], Epick::Segment_2(px, py))) return false;
         }
       }
     }
-    // 3D: the candidates of the whole fan are gathered once.
-    std::vector<std::array<Vec3, 3>> corners;
-    for (const auto& t : fan.triangles)
-      corners.push_back({position(fan, t[0]), position(fan, t[1]), position(fan, t[2])});
-    return !meets_stored_triangles(fan.triangles, corners);
+    // 3D: the fan's triangles against each other and against the triangles already there.
+    Small_list<Stored_triangle, 3> candidates;
+    for (const auto& t : fan.triangles) {
+      candidates.push_back(
+          make_stored(t, {position(fan, t[0]), position(fan, t[1]), position(fan, t[2])}));
+      if (CGAL::collinear(candidates[candidates.size() - 1].corners[0],
+                          candidates[candidates.size() - 1].corners[1],
+                          candidates[candidates.size() - 1].corners[2]))
+        return false;
+    }
+    for (std::size_t i = 0; i < candidates.size(); ++i) {
+      for (std::size_t j = i + 1; j < candidates.size(); ++j) {
+        if (triangles_meet(candidates[i].ids, candidates[i].corners, candidates[j])) return false;
+      }
+    }
+    return !meets_stored_triangles(candidates.begin(), candidates.end());
   }
 
   // ---- exact 3D test against the triangles already there --------------------------------------
@@ -416,110 +553,127 @@ class Advancing_front {
     CGAL::Bbox_3 box;
   };
   static Point_3 point_3(const Vec3& p) { return Point_3(p[0], p[1], p[2]); }
-
-  /// Cells of the triangle grid overlapped by the bounding box of `corners`.
-  template <class F>
-  void for_cells(const std::array<Vec3, 3>& corners, F f) const {
-    Vec3 lo = corners[0], hi = corners[0];
-    for (int k = 1; k < 3; ++k) {
-      for (int d = 0; d < 3; ++d) {
-        lo[d] = std::min(lo[d], corners[k][d]);
-        hi[d] = std::max(hi[d], corners[k][d]);
-      }
-    }
-    for_cells(lo, hi, f);
+  static Stored_triangle make_stored(const std::array<std::size_t, 3>& ids,
+                                     const std::array<Vec3, 3>& corners) {
+    Stored_triangle stored{
+        ids, {point_3(corners[0]), point_3(corners[1]), point_3(corners[2])}, CGAL::Bbox_3()};
+    stored.box = stored.corners[0].bbox() + stored.corners[1].bbox() + stored.corners[2].bbox();
+    return stored;
   }
+
+  /// Calls f on the cells of the triangle grid overlapped by `box`; false (and no call) when the
+  /// box spans more than 64 cells along an axis: such triangles are kept in `large_` and such
+  /// queries scan every stored triangle.
   template <class F>
-  void for_cells(const Vec3& lo_point, const Vec3& hi_point, F f) const {
+  bool for_cells(const CGAL::Bbox_3& box, F f) const {
     std::array<std::int64_t, 3> lo, hi;
     for (int d = 0; d < 3; ++d) {
-      lo[d] = std::int64_t(std::floor(lo_point[d] / cell_));
-      hi[d] = std::int64_t(std::floor(hi_point[d] / cell_));
-      if (hi[d] - lo[d] > 64) return;  // absurd extent: not stored, never a candidate
+      lo[d] = std::int64_t(std::floor(box.min(d) / triangle_cell_));
+      hi[d] = std::int64_t(std::floor(box.max(d) / triangle_cell_));
+      if (!(hi[d] - lo[d] <= 64)) return false;
     }
     for (std::int64_t i = lo[0]; i <= hi[0]; ++i)
       for (std::int64_t j = lo[1]; j <= hi[1]; ++j)
         for (std::int64_t k = lo[2]; k <= hi[2]; ++k)
           f((std::uint64_t(i & 0x1fffff) << 42) | (std::uint64_t(j & 0x1fffff) << 21) |
             std::uint64_t(k & 0x1fffff));
+    return true;
   }
 
-  void store_triangle(const std::array<std::size_t, 3>& ids, const std::array<Vec3, 3>& corners) {
-    Stored_triangle stored{
-        ids, {point_3(corners[0]), point_3(corners[1]), point_3(corners[2])}, CGAL::Bbox_3()};
-    stored.box = stored.corners[0].bbox() + stored.corners[1].bbox() + stored.corners[2].bbox();
-    if (CGAL::collinear(stored.corners[0], stored.corners[1], stored.corners[2])) return;
+  static constexpr std::size_t not_stored = std::size_t(-1);
+  /// Stores a triangle for the exact tests; its index, or `not_stored` for a degenerate one.
+  std::size_t store_triangle(const std::array<std::size_t, 3>& ids,
+                             const std::array<Vec3, 3>& corners) {
+    const Stored_triangle stored = make_stored(ids, corners);
+    if (CGAL::collinear(stored.corners[0], stored.corners[1], stored.corners[2])) return not_stored;
     const std::size_t index = stored_.size();
     stored_.push_back(stored);
     visit_stamp_.push_back(0);
-    for_cells(corners, [&](std::uint64_t cell) { triangle_grid_[cell].push_back(index); });
+    register_in_cells(index);
+    return index;
+  }
+  /// A grid entry: a stored triangle and its box rounded outwards to floats, so that a scan of
+  /// a cell reads one contiguous array and rejects most candidates without touching them.
+  struct Cell_entry {
+    std::array<float, 6> box;
+    std::uint32_t index;
+  };
+  static std::array<float, 6> float_box(const CGAL::Bbox_3& box) {
+    // Widened by 1e-6 relative (and 1e-30 absolute) before rounding to float (relative error
+    // below 6e-8), so the float box contains the double one.
+    std::array<float, 6> rounded;
+    for (int d = 0; d < 3; ++d) {
+      const double lo = box.min(d), hi = box.max(d);
+      rounded[d] = float(lo - std::abs(lo) * 1e-6 - 1e-30);
+      rounded[d + 3] = float(hi + std::abs(hi) * 1e-6 + 1e-30);
+    }
+    return rounded;
+  }
+  static bool float_boxes_overlap(const std::array<float, 6>& a, const std::array<float, 6>& b) {
+    return a[0] <= b[3] && b[0] <= a[3] && a[1] <= b[4] && b[1] <= a[4] && a[2] <= b[5] &&
+           b[2] <= a[5];
+  }
+  void register_in_cells(std::size_t index) {
+    const Cell_entry entry{float_box(stored_[index].box), std::uint32_t(index)};
+    if (!for_cells(stored_[index].box,
+                   [&](std::uint64_t cell) { triangle_grid_[cell].push_back(entry); }))
+      large_.push_back(index);
+  }
+
+  /// Calls `test(index)` on every stored triangle whose box may overlap `box`, once per visit
+  /// (stored triangles whose stamp is already `visit_` are skipped); stops when it returns true.
+  template <class Test>
+  bool any_stored_near(const CGAL::Bbox_3& box, Test test) const {
+    bool found = false;
+    const auto visit = [&](std::size_t index) {
+      if (visit_stamp_[index] == visit_) return;
+      visit_stamp_[index] = visit_;
+      found = test(index);
+    };
+    for (std::size_t index : large_) {
+      visit(index);
+      if (found) return true;
+    }
+    const std::array<float, 6> rounded = float_box(box);
+    const bool gridded = for_cells(box, [&](std::uint64_t cell) {
+      if (found) return;
+      const auto it = triangle_grid_.find(cell);
+      if (it == triangle_grid_.end()) return;
+      for (const Cell_entry& entry : it->second) {
+        if (!float_boxes_overlap(entry.box, rounded)) continue;  // conservative: boxes rounded out
+        visit(entry.index);
+        if (found) return;
+      }
+    });
+    if (!gridded) {
+      for (std::size_t index = 0; index < stored_.size() && !found; ++index) visit(index);
+    }
+    return found;
   }
 
   /// Exact test (Epick's filtered predicates) of a new triangle against the stored triangles
-  /// whose cells it overlaps. Triangles sharing an edge meet when they fold onto each other
+  /// whose boxes it overlaps. Triangles sharing an edge meet when they fold onto each other
   /// (coplanar, same side); sharing a vertex, when the edge opposite it in one meets the other.
   bool meets_stored_triangle(const std::array<std::size_t, 3>& ids,
                              const std::array<Vec3, 3>& corners) const {
-    const std::array<Point_3, 3> t{point_3(corners[0]), point_3(corners[1]), point_3(corners[2])};
-    if (CGAL::collinear(t[0], t[1], t[2])) return true;
-    const CGAL::Bbox_3 box = t[0].bbox() + t[1].bbox() + t[2].bbox();
-    ++visit_;
-    bool meets = false;
-    for_cells(corners, [&](std::uint64_t cell) {
-      if (meets) return;
-      const auto it = triangle_grid_.find(cell);
-      if (it == triangle_grid_.end()) return;
-      for (std::size_t index : it->second) {
-        if (visit_stamp_[index] == visit_) continue;
-        visit_stamp_[index] = visit_;
-        if (!CGAL::do_overlap(box, stored_[index].box)) continue;
-        if (triangles_meet(ids, t, stored_[index])) {
-          meets = true;
-          return;
-        }
-      }
-    });
-    return meets;
+    const Stored_triangle t = make_stored(ids, corners);
+    if (CGAL::collinear(t.corners[0], t.corners[1], t.corners[2])) return true;
+    return meets_stored_triangles(&t, &t + 1);
   }
 
   /// `meets_stored_triangle` for several triangles at once (a fan): one pass over the cells.
-  bool meets_stored_triangles(const std::vector<std::array<std::size_t, 3>>& ids,
-                              const std::vector<std::array<Vec3, 3>>& corners) const {
-    std::vector<std::array<Point_3, 3>> triangles;
-    std::vector<CGAL::Bbox_3> boxes;
-    Vec3 lo = corners[0][0], hi = corners[0][0];
-    for (const auto& c : corners) {
-      triangles.push_back({point_3(c[0]), point_3(c[1]), point_3(c[2])});
-      const auto& t = triangles.back();
-      if (CGAL::collinear(t[0], t[1], t[2])) return true;
-      boxes.push_back(t[0].bbox() + t[1].bbox() + t[2].bbox());
-      for (int k = 0; k < 3; ++k) {
-        for (int d = 0; d < 3; ++d) {
-          lo[d] = std::min(lo[d], c[k][d]);
-          hi[d] = std::max(hi[d], c[k][d]);
-        }
-      }
-    }
+  bool meets_stored_triangles(const Stored_triangle* first, const Stored_triangle* last) const {
+    CGAL::Bbox_3 box;
+    for (const Stored_triangle* t = first; t != last; ++t) box += t->box;
     ++visit_;
-    bool meets = false;
-    for_cells(lo, hi, [&](std::uint64_t cell) {
-      if (meets) return;
-      const auto it = triangle_grid_.find(cell);
-      if (it == triangle_grid_.end()) return;
-      for (std::size_t index : it->second) {
-        if (visit_stamp_[index] == visit_) continue;
-        visit_stamp_[index] = visit_;
-        const Stored_triangle& stored = stored_[index];
-        for (std::size_t k = 0; k < triangles.size(); ++k) {
-          if (CGAL::do_overlap(boxes[k], stored.box) &&
-              triangles_meet(ids[k], triangles[k], stored)) {
-            meets = true;
-            return;
-          }
-        }
+    return any_stored_near(box, [&](std::size_t index) {
+      const Stored_triangle& stored = stored_[index];
+      for (const Stored_triangle* t = first; t != last; ++t) {
+        if (CGAL::do_overlap(t->box, stored.box) && triangles_meet(t->ids, t->corners, stored))
+          return true;
       }
+      return false;
     });
-    return meets;
   }
 
   static bool triangles_meet(const std::array<std::size_t, 3>& ids, const std::array<Point_3, 3>& t,
@@ -585,6 +739,17 @@ class Advancing_front {
   }
 
   // ---- the rules ----------------------------------------------------------------------------
+  /// The edge length wanted at node v between front neighbours a and b.
+  double size_at(std::size_t v, std::size_t a, std::size_t b) {
+    if (options_.size_from_position_only) {
+      if (size_cache_.size() < points_.size()) size_cache_.resize(points_.size(), -1.0);
+      if (size_cache_[v] < 0) size_cache_[v] = size_(points_[v], 0.0);
+      return size_cache_[v];
+    }
+    return size_(points_[v],
+                 0.5 * (norm(sub(points_[a], points_[v])) + norm(sub(points_[b], points_[v]))));
+  }
+
   /// Direction at v rotated by phi from the tangent direction of `toward` about `n`
   /// (counterclockwise for positive phi).
   Vec3 rotated(std::size_t v, std::size_t toward, const Vec3& n, double phi) const {
@@ -606,8 +771,7 @@ class Advancing_front {
     if (front_[front_[out].next].next == in) return close_triangle(in);
     const double deg = theta * 180.0 / CGAL_PI;
     if (deg < options_.small_angle_deg) return ear(in);
-    const double length = size_(
-        points_[v], 0.5 * (norm(sub(points_[a], points_[v])) + norm(sub(points_[b], points_[v]))));
+    const double length = size_at(v, a, b);
     // Eq. 4.9-4.12: the new elements' normals average the node's with its neighbours'.
     const Vec3 n = normal(v);
     const Vec3 n1 = normalized(add(n, normal(a))), n2 = normalized(add(n, normal(b)));
@@ -702,12 +866,12 @@ class Advancing_front {
   }
 
   /// Fan a, p_1, ..., p_k, b around v with new nodes.
-  bool fresh_fan(int in, const std::vector<Vec3>& nodes) {
+  bool fresh_fan(int in, const Small_list<Vec3, 2>& nodes) {
     const int out = front_[in].next;
     const std::size_t a = front_[in].from, v = front_[in].to, b = front_[out].to;
     Fan fan;
     fan.new_points = nodes;
-    std::vector<std::size_t> chain{a};
+    Small_list<std::size_t, 4> chain{a};
     for (std::size_t k = 0; k < nodes.size(); ++k) chain.push_back(points_.size() + k);
     chain.push_back(b);
     for (std::size_t k = 0; k + 1 < chain.size(); ++k)
@@ -719,7 +883,7 @@ class Advancing_front {
     kill(out);
     for (const auto& t : fan.triangles) add_triangle(t[0], t[1], t[2]);
     int previous = before;
-    std::vector<int> created;
+    Small_list<int, 3> created;
     for (std::size_t k = 0; k + 1 < chain.size(); ++k) {
       const int e = add_front_edge(chain[k], chain[k + 1]);
       link(previous, e);
@@ -746,10 +910,10 @@ class Advancing_front {
   /// Rule b with the new node merged into the front node q: triangles (a, v, q), (q, v, b),
   /// which split the front loop in two (or consume q's edges when q neighbours a or b).
   bool merge_fan(int in, std::size_t q) {
-    if (out_edges_[q].size() != 1) return false;
+    if (first_out_[q] == none || front_[first_out_[q]].next_out != none) return false;
     const int out = front_[in].next;
     const std::size_t a = front_[in].from, v = front_[in].to, b = front_[out].to;
-    const int q_out = out_edges_[q].front(), q_in = front_[q_out].prev;
+    const int q_out = first_out_[q], q_in = front_[q_out].prev;
     if (!same_loop(out, q_out)) return false;
     Fan fan{{{a, v, q}, {q, v, b}}, {}};
     if (edges_.count(key(v, q))) return false;
@@ -844,6 +1008,11 @@ class Advancing_front {
         stack.pop_back();
         if (j < i + 2) continue;
         const std::size_t k = std::size_t(apex[i * n + j]);
+        // Each triangle passed the test against what was there before the loop's
+        // triangulation, not against the loop's other triangles: test it against them too.
+        if (meets_stored_triangle({loop[i], loop[k], loop[j]},
+                                  {points_[loop[i]], points_[loop[k]], points_[loop[j]]}))
+          unchecked_ = true;
         add_triangle(loop[i], loop[k], loop[j]);
         stack.emplace_back(k, j);
         stack.emplace_back(i, k);
@@ -873,7 +1042,8 @@ class Advancing_front {
 
   // ---- after closing --------------------------------------------------------------------------
   /// Tangential relaxation of the new nodes towards their neighbours' centroid, each move
-  /// finished by the projection: evens out the triangles without shrinking the patch.
+  /// finished by the projection: evens out the triangles without shrinking the patch. The moved
+  /// triangles are then tested again (`recheck_patch`), so the patch stays exactly checked.
   void smooth() {
     const std::size_t count = points_.size();
     if (options_.smoothing_iterations <= 0 || count == border_count_) return;
@@ -902,27 +1072,64 @@ class Advancing_front {
         points_[p] = project_(add(points_[p], move), n);
       }
     }
+    if (!recheck_patch()) unchecked_ = true;
+  }
+
+  /// After the relaxation moved the new nodes: every triangle of the patch, at its final
+  /// position, is tested exactly against every other one and every context triangle whose box
+  /// it overlaps (each pair once). True when none meets (nor is degenerate).
+  bool recheck_patch() {
+    if (triangles_.empty()) return true;
+    std::size_t first_patch = stored_.size();
+    for (std::size_t index = 0; index < triangles_.size(); ++index) {
+      const std::size_t stored = triangle_stored_[index];
+      if (stored == not_stored) return false;
+      first_patch = std::min(first_patch, stored);
+      const auto& t = triangles_[index];
+      stored_[stored] = make_stored(t, {points_[t[0]], points_[t[1]], points_[t[2]]});
+      const Stored_triangle& moved = stored_[stored];
+      if (CGAL::collinear(moved.corners[0], moved.corners[1], moved.corners[2])) return false;
+    }
+    for (auto& cell : triangle_grid_) cell.second.clear();
+    large_.clear();
+    for (std::size_t index = 0; index < stored_.size(); ++index) register_in_cells(index);
+    for (std::size_t stored = first_patch; stored < stored_.size(); ++stored) {
+      const Stored_triangle& t = stored_[stored];
+      ++visit_;
+      const bool meets = any_stored_near(t.box, [&](std::size_t index) {
+        if (index >= first_patch && index <= stored) return false;  // this pair: tested once
+        const Stored_triangle& other = stored_[index];
+        return CGAL::do_overlap(t.box, other.box) && triangles_meet(t.ids, t.corners, other);
+      });
+      if (meets) return false;
+    }
+    return true;
   }
 
   Front_projection project_;
   Front_size size_;
   Front_options options_;
   std::vector<Vec3> points_, normal_sums_;
-  std::vector<std::vector<int>> out_edges_;
+  std::vector<int> first_out_;  // per point: its first live outgoing front edge, or `none`
   std::vector<Front_edge> front_;
   std::vector<std::uint32_t> stamps_;
-  std::unordered_map<std::uint64_t, int> directed_;
-  std::unordered_set<std::uint64_t> edges_;
+  Edge_set edges_;
   std::unordered_map<std::uint64_t, std::vector<std::size_t>> grid_;
   std::priority_queue<Corner, std::vector<Corner>, std::greater<Corner>> queue_;
   std::vector<int> blocked_;
   std::vector<std::array<std::size_t, 3>> triangles_;
+  std::vector<std::size_t> triangle_stored_;  // per triangle: its index in stored_
   std::vector<Stored_triangle> stored_;
-  std::unordered_map<std::uint64_t, std::vector<std::size_t>> triangle_grid_;
+  std::vector<std::size_t> large_;  // stored triangles spanning too many cells for the grid
+  std::vector<double> size_cache_;  // per point, with `size_from_position_only` (-1: not yet)
+  mutable std::vector<std::size_t> near_points_;
+  bool context_complete_ = false, unchecked_ = false;
+  Vec3 context_lo_{0, 0, 0}, context_hi_{0, 0, 0};
+  std::unordered_map<std::uint64_t, std::vector<Cell_entry>> triangle_grid_;
   mutable std::vector<std::uint32_t> visit_stamp_;
   mutable std::uint32_t visit_ = 0;
   std::size_t alive_ = 0, border_count_ = 0, max_triangles_ = 0;
-  double mean_length_ = 1, cell_ = 1;
+  double mean_length_ = 1, cell_ = 1, triangle_cell_ = 1;
   Vec3 hole_normal_{0, 0, 1};
 };
 

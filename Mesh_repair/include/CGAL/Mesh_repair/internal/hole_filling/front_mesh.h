@@ -78,6 +78,7 @@ Front_input front_input_from_border(
     reached.insert(reached.end(), next_layer.begin(), next_layer.end());
   }
   std::unordered_map<face_descriptor, bool> seen_face;
+  bool all_triangles = true;
   const auto add_context_face = [&](face_descriptor f) {
     if (f == boost::graph_traits<PolygonMesh>::null_face() || !seen_face.emplace(f, true).second)
       return;
@@ -93,7 +94,10 @@ Front_input front_input_from_border(
       if (count < 3) corners[std::size_t(count)] = found->second;
       ++count;
     }
-    if (count == 3) input.context_triangles.push_back(corners);
+    if (count == 3)
+      input.context_triangles.push_back(corners);
+    else
+      all_triangles = false;  // not tested by the front: the caller's own check must run
   };
   for (vertex_descriptor v : reached) {
     for (face_descriptor f : faces_around_target(halfedge(v, pm), pm)) add_context_face(f);
@@ -112,9 +116,14 @@ Front_input front_input_from_border(
     lo[d] -= margin;
     hi[d] += margin;
   }
+  // Every face whose box overlaps [lo, hi] is in the context (below), so a patch inside that
+  // box whose triangles all passed the front's exact test meets no face of the mesh.
+  input.context_lo = lo;
+  input.context_hi = hi;
   if (near_faces != nullptr) {
     const CGAL::Bbox_3 box(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]);
     for (face_descriptor f : near_faces->overlapping(box, seen_face)) add_context_face(f);
+    input.context_complete = all_triangles;
     return input;
   }
   for (face_descriptor f : faces(pm)) {
@@ -133,6 +142,7 @@ Front_input front_input_from_border(
     for (int d = 0; d < 3; ++d) overlaps = overlaps && flo[d] <= hi[d] && fhi[d] >= lo[d];
     if (overlaps) add_context_face(f);
   }
+  input.context_complete = all_triangles;
   return input;
 }
 
