@@ -128,6 +128,89 @@ Mesh overlapping_spheres_with_facing_holes() {
   return mesh;
 }
 
+/// Same vertex positions and same faces (corners by index), element for element.
+void expect_same_mesh(const Mesh& a, const Mesh& b) {
+  ASSERT_EQ(a.number_of_vertices(), b.number_of_vertices());
+  ASSERT_EQ(a.number_of_faces(), b.number_of_faces());
+  for (auto v : a.vertices()) EXPECT_EQ(a.point(v), b.point(v));
+  for (auto f : a.faces()) {
+    auto corner = vertices_around_face(b.halfedge(f), b).begin();
+    for (auto v : vertices_around_face(a.halfedge(f), a)) EXPECT_EQ(v, *corner++);
+  }
+}
+
+TEST(AutomaticRepair, TwoThreadsGiveTheSameMeshAsOne) {
+  Mesh serial = sphere_with_holes();
+  Mesh parallel = serial;
+  const auto one = MR::automatic_repair(serial, MR::parameters::number_of_threads(1));
+  const auto two = MR::automatic_repair(parallel, MR::parameters::number_of_threads(2));
+  EXPECT_EQ(one.holes.filled, 3u);
+  EXPECT_EQ(two.holes.filled, 3u);
+  expect_same_mesh(serial, parallel);
+}
+
+// elephant-with-holes has 40 pinched holes (two holes meeting at a vertex): the patches welded in
+// the copies cannot be spliced and are filled in place; the others come from the copies.
+TEST(AutomaticRepair, RealScanGivesTheSameMeshWithTwoThreads) {
+  const std::string path = std::string(MESH_REPAIR_DEMO_DATA_DIR) + "/elephant-with-holes.off";
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << "libcgal-demo meshes absent (" << path << ")";
+  Mesh serial;
+  MR::Soup_repair_report soup;
+  ASSERT_EQ(MR::read_mesh(path, serial, soup), "");
+  Mesh parallel = serial;
+  const auto one = MR::automatic_repair(serial, MR::parameters::number_of_threads(1));
+  const auto two = MR::automatic_repair(parallel, MR::parameters::number_of_threads(2));
+  EXPECT_EQ(one.holes.failed, 0u);
+  EXPECT_EQ(two.holes.filled, one.holes.filled);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(parallel) && CGAL::is_closed(parallel));
+  EXPECT_TRUE(two.manifold);
+  expect_same_mesh(serial, parallel);
+}
+
+std::size_t self_intersection_count(const Mesh& mesh) {
+  std::vector<std::pair<Mesh::Face_index, Mesh::Face_index>> pairs;
+  PMP::self_intersections(mesh, std::back_inserter(pairs));
+  return pairs.size();
+}
+
+/// A sphere where two vertices were pushed through the surface, each along a chord (the two
+/// chords do not meet) until just past the far side: each spike pierces the sphere there.
+Mesh sphere_with_spikes() {
+  Mesh mesh;
+  MR::make_sphere(mesh, Point(0, 0, 0), 1.0, 4);
+  const std::pair<Point, Point> spikes[] = {{Point(0, 0, 1), Point(0, 0, -1.1)},
+                                            {Point(0.6, 0.8, 0), Point(0.6, -0.9, 0)}};
+  for (const auto& spike : spikes) {
+    Mesh::Vertex_index v = *mesh.vertices().begin();
+    for (auto w : mesh.vertices())
+      if (CGAL::squared_distance(mesh.point(w), spike.first) <
+          CGAL::squared_distance(mesh.point(v), spike.first))
+        v = w;
+    mesh.point(v) = spike.second;
+  }
+  return mesh;
+}
+
+TEST(AutomaticRepair, SelfIntersectionRemovalOptionReducesTheSpikes) {
+  Mesh mesh = sphere_with_spikes();
+  const std::size_t before = self_intersection_count(mesh);
+  ASSERT_GT(before, 0u);
+  const auto result = MR::automatic_repair(mesh, MR::parameters::repair_self_intersections(true));
+  EXPECT_EQ(result.self_intersections_input, before);
+  EXPECT_LT(result.self_intersections_output, before);
+  EXPECT_EQ(result.self_intersections_output, self_intersection_count(mesh));
+  EXPECT_EQ(result.self_intersections_in_patches, 0u);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  EXPECT_TRUE(CGAL::is_closed(mesh));
+  bool reported = false;
+  for (const auto& step : result.steps) reported |= step.name == "self-intersection removal";
+  EXPECT_TRUE(reported);
+
+  Mesh untouched = sphere_with_spikes();
+  const auto without = MR::automatic_repair(untouched);
+  EXPECT_EQ(without.self_intersections_output, before);
+}
+
 TEST(FillHoles, APatchMeetingAnotherPartOfTheMeshIsRolledBack) {
   Mesh mesh = overlapping_spheres_with_facing_holes();
   ASSERT_EQ(border_cycle_count(mesh), 2u);

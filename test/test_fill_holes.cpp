@@ -216,6 +216,63 @@ TEST(AdvancingFrontCore, StuckFrontIsClosedByTheCheckedTriangulationOfItsLoop) {
   EXPECT_FALSE(walled.failure.empty());
 }
 
+/// The front checks its own patch, in its final (relaxed) positions, against itself and every
+/// mesh face near the hole, so `fill_hole_advancing_front` skips the whole-mesh check
+/// (`exactly_checked`); the flag drops when the context is incomplete or the patch leaves the
+/// box in which the context holds every face, and CGAL's check agrees with a checked patch.
+TEST(AdvancingFrontCore, ClosedFrontIsExactlyCheckedInItsFinalPositions) {
+  namespace MI = MR::internal;
+  Mesh mesh = sphere_with_hole(0.5);
+  const std::size_t original_faces = mesh.number_of_faces();
+  const auto border = *std::find_if(halfedges(mesh).begin(), halfedges(mesh).end(),
+                                    [&](auto h) { return is_border(h, mesh); });
+  std::vector<Mesh::Vertex_index> point_vertices;
+  MI::Front_input input = MI::front_input_from_border(mesh, mesh.points(), border, point_vertices);
+  EXPECT_TRUE(input.context_complete);
+  const MI::Front_size size = MI::border_density(input);
+  const auto onto_sphere = [](const MI::Vec3& p, const MI::Vec3&) { return MI::normalized(p); };
+  MI::Front_options options;
+  options.smoothing_iterations = 3;
+  const MI::Front_triangulation t = MI::advance_front(input, onto_sphere, size, options);
+  ASSERT_TRUE(t.closed) << t.failure;
+  EXPECT_TRUE(t.exactly_checked);
+
+  MR::Fill_patch<Mesh> patch;
+  ASSERT_TRUE(MI::insert_front_triangulation(mesh, mesh.points(), t, point_vertices, patch));
+  EXPECT_TRUE(closed_valid_and_clean(mesh));
+  EXPECT_EQ(new_intersections(mesh, original_faces), 0u);
+
+  MI::Front_input outside = input;  // a box that the new nodes leave
+  outside.context_hi = outside.context_lo;
+  const MI::Front_triangulation unboxed = MI::advance_front(outside, onto_sphere, size, options);
+  ASSERT_TRUE(unboxed.closed);
+  EXPECT_FALSE(unboxed.exactly_checked);
+  MI::Front_input incomplete = input;  // e.g. a quad near the hole, which the front cannot test
+  incomplete.context_complete = false;
+  EXPECT_FALSE(MI::advance_front(incomplete, onto_sphere, size, options).exactly_checked);
+}
+
+/// A face of another component pierces the hole's region: no surface spanning the hole avoids
+/// it, and since the front collects every face near the hole (not only the ring) and tests each
+/// new triangle against it, no patch is kept; the mesh is unchanged.
+TEST(FillHoles, AdvancingFrontKeepsNoPatchThroughAFaceOfAnotherComponent) {
+  Mesh mesh = sphere_with_hole(0.5);
+  const auto a = mesh.add_vertex(Point(0.02, 0.0, 0.6));
+  const auto b = mesh.add_vertex(Point(-0.02, 0.01, 0.6));
+  const auto c = mesh.add_vertex(Point(0.0, -0.01, 1.4));
+  mesh.add_face(a, b, c);
+  const std::size_t faces_before = mesh.number_of_faces();
+  const auto border = *std::find_if(halfedges(mesh).begin(), halfedges(mesh).end(), [&](auto h) {
+    return is_border(h, mesh) && mesh.target(h) != a && mesh.target(h) != b && mesh.target(h) != c;
+  });
+  MR::Fill_patch<Mesh> patch;
+  const MR::Hole_fill_report report = MR::fill_hole_advancing_front(mesh, border, patch);
+  EXPECT_FALSE(report.filled);
+  EXPECT_EQ(mesh.number_of_faces(), faces_before);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  EXPECT_FALSE(PMP::does_self_intersect(mesh));
+}
+
 TEST(FillHoles, LiepaClosesASphereHoleWithEveryContinuity) {
   for (unsigned continuity : {0u, 1u, 2u}) {
     Mesh mesh = sphere_with_hole(0.5);
@@ -270,6 +327,50 @@ TEST(FillHoles, RingHoleIsClosedWithOnePatchJoiningTheIsland) {
     EXPECT_TRUE(closed_valid_and_clean(filled)) << MR::to_string(method);
     std::vector<std::size_t> component(num_faces(filled) + filled.number_of_removed_faces());
     EXPECT_EQ(PMP::connected_components(filled, CGAL::make_property_map(component)), 1u);
+  }
+}
+
+/// A sphere with a ring hole and `holes` simple holes spread over it (Fibonacci points).
+Mesh sphere_with_many_holes(int holes) {
+  Mesh mesh = sphere_with_ring_hole();
+  const double golden = CGAL_PI * (3.0 - std::sqrt(5.0));
+  for (int i = 0; i < holes; ++i) {
+    const double z = -0.9 + 1.3 * (i + 0.5) / holes;  // below the ring hole's band
+    const double r = std::sqrt(1.0 - z * z);
+    punch_hole(mesh, Point(r * std::cos(golden * i), r * std::sin(golden * i), z), 0.13);
+  }
+  return mesh;
+}
+
+/// Every vertex position and every face's corners, in index order: equal only when the two
+/// meshes are the same element for element.
+std::pair<std::vector<Point>, std::vector<std::size_t>> elements(const Mesh& mesh) {
+  std::pair<std::vector<Point>, std::vector<std::size_t>> all;
+  for (auto v : vertices(mesh)) all.first.push_back(mesh.point(v));
+  for (auto f : faces(mesh)) {
+    all.second.push_back(std::size_t(f));
+    for (auto v : vertices_around_face(halfedge(f, mesh), mesh)) all.second.push_back(v);
+  }
+  return all;
+}
+
+TEST(FillHoles, ParallelFillingGivesTheSameMeshAsOneThread) {
+  for (MR::Fill_method method :
+       {MR::Fill_method::automatic, MR::Fill_method::shape_prediction, MR::Fill_method::liepa}) {
+    const Mesh input = sphere_with_many_holes(method == MR::Fill_method::automatic ? 40 : 12);
+    const std::size_t holes = count_border_cycles(input) - 1;  // the island joins its hole
+    ASSERT_GE(holes, method == MR::Fill_method::automatic ? 30u : 10u);
+    Mesh serial = input, parallel = input;
+    const auto np = MR::parameters::fill_method(method).random_seed(7);
+    const MR::Fill_result one = MR::fill_holes(serial, np.number_of_threads(1));
+    const MR::Fill_result two = MR::fill_holes(parallel, np.number_of_threads(2));
+    EXPECT_EQ(one.filled, holes) << MR::to_string(method);
+    EXPECT_EQ(two.filled, holes) << MR::to_string(method);
+    EXPECT_TRUE(CGAL::is_closed(parallel) && CGAL::is_valid_polygon_mesh(parallel));
+    EXPECT_EQ(serial.number_of_vertices(), parallel.number_of_vertices());
+    EXPECT_TRUE(elements(serial) == elements(parallel)) << MR::to_string(method);
+    for (std::size_t k = 0; k < one.holes.size(); ++k)
+      EXPECT_EQ(one.holes[k].used, two.holes[k].used) << MR::to_string(method) << " hole " << k;
   }
 }
 

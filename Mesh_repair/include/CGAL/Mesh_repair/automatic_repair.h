@@ -93,9 +93,11 @@ namespace Mesh_repair {
 ///     \cgalParamDefault{`false`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_threads}
-///     \cgalParamDescription{threads of TBB's pool during the call; in this version holes are
-///                           filled one after the other and only the self-intersection counts
-///                           run in parallel, see doc/automatic_repair.md}
+///     \cgalParamDescription{threads of TBB's pool during the call: the self-intersection
+///                           counts and the hole filling (independent holes filled on copies
+///                           of their surroundings at the same time, spliced in hole order)
+///                           run on it; the output is the same for any number of threads, see
+///                           doc/automatic_repair.md}
 ///     \cgalParamType{int}
 ///     \cgalParamDefault{0: all cores}
 ///   \cgalParamNEnd
@@ -149,7 +151,7 @@ Repair_result automatic_repair(PolygonMesh& pm,
   fill.threads = choose_parameter(get_parameter(np, internal_np::number_of_threads_t{}), 0);
 
 #ifdef CGAL_LINKED_WITH_TBB
-  // The parallel steps (CGAL's self-intersection tests) run on TBB's pool; the limit holds
+  // The parallel steps (self-intersection counts, hole filling) run on TBB's pool; the limit holds
   // for the duration of the call.
   std::unique_ptr<tbb::global_control> limit;
   if (fill.threads > 0)

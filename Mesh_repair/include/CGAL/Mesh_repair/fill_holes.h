@@ -9,8 +9,10 @@
 /// predicates (no self-intersection with itself, its surrounding ring or any other face of the
 /// mesh near it, earlier patches included; the hole closed) and a
 /// patch that fails is rolled back and reported, never left in the mesh. Ring holes (a hole with
-/// island cycles inside) are detected and bridged into one simple hole first. See
-/// doc/fill_holes.md.
+/// island cycles inside) are detected and bridged into one simple hole first. Independent holes
+/// are filled at the same time (TBB), each on a copy of its surroundings, and the patches are
+/// spliced and checked in hole order, so the mesh is the same for any number of threads. See
+/// doc/fill_holes.md and doc/automatic_repair.md ("Parallelism").
 
 #include <CGAL/Mesh_repair/hole_filling/fill_result.h>
 #include <CGAL/Mesh_repair/hole_filling/advancing_front.h>
@@ -18,6 +20,7 @@
 #include <CGAL/Mesh_repair/hole_filling/liepa.h>
 #include <CGAL/Mesh_repair/hole_filling/shape_prediction.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/border_cycles.h>
+#include <CGAL/Mesh_repair/internal/hole_filling/local_region.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/patch_check.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/pinches.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/ring_holes.h>
@@ -25,9 +28,16 @@
 #include <CGAL/Mesh_repair/parameters.h>
 #include <CGAL/Mesh_repair/visitor.h>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+#endif
+
+#include <algorithm>
 #include <chrono>
 #include <limits>
 #include <string>
+#include <type_traits>
 #include <unordered_set>
 #include <vector>
 
@@ -71,7 +81,11 @@ inline Hole_fill_report method_not_available(Fill_method method) {
 // may move only those new vertices and the hole's border vertices and their neighbours; it sets
 // `filled` when it believes the hole closed, `failure` otherwise. It neither checks nor rolls
 // back: the dispatcher verifies every patch (closed, no self-intersection, exact predicates)
-// and removes rejected ones. It reads its own parameters from `np`.
+// and removes rejected ones. It reads its own parameters from `np`. It reads the mesh only
+// within two rings of the border and, through `face_box_cache`, the faces near the hole: holes
+// are filled on copies holding those (internal/hole_filling/local_region.h), from several
+// threads, so a method keeps no shared mutable state and draws random numbers only from
+// `random_seed`.
 // ---------------------------------------------------------------------------------------------
 
 /// True for the methods that take every selected hole at once.
@@ -139,8 +153,17 @@ class Hole_filler {
   using Patch = Fill_patch<PolygonMesh>;
   using Transaction = Patch_transaction<PolygonMesh, VertexPointMap>;
   using Clock = std::chrono::steady_clock;
+  using Point = typename boost::property_traits<VertexPointMap>::value_type;
+  using Region = Local_region<PolygonMesh, Point>;
+  using Local_mesh = typename Region::Mesh;
 
  public:
+  /// What the task of one hole computes on its own copy of the hole's surroundings.
+  struct Local_fill {
+    Region region;
+    Fill_patch<Local_mesh> patch;
+    Hole_fill_report report;
+  };
   Hole_filler(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
               bool check_self_intersections, const NamedParameters& np)
       : pm_(pm),
@@ -164,7 +187,7 @@ class Hole_filler {
 
   /// Fills one group with `method` (`automatic`: each method of `automatic_sequence` in turn).
   Hole_fill_report fill(const Group& group, Fill_method method, Patch& patch) {
-    const auto start = Clock::now();
+    const auto start_time = Clock::now();
     if (check_) near_faces_.build();
     const Border_cycle_geometry outer = cycle_geometry(group.outer, pm_, vpm_);
     Hole_fill_report report;
@@ -201,8 +224,48 @@ class Hole_filler {
     report.requested = method;
     report.border_edges = outer.edges;
     report.perimeter = outer.perimeter;
-    report.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    report.seconds = std::chrono::duration<double>(Clock::now() - start_time).count();
     return report;
+  }
+
+  /// Takes the faces of the mesh as the obstacles of every hole (before the first patch).
+  void build_face_boxes() { near_faces_.build(); }
+
+  /// Fills `group` on a copy of its surroundings (local_region.h). Only reads the mesh and the
+  /// face boxes, so the tasks of several holes run at the same time; `build_face_boxes()`
+  /// comes first.
+  void fill_locally(const Group& group, Fill_method method, Local_fill& local) const {
+    copy_local_region(pm_, vpm_, group, &near_faces_, local.region);
+    if (!local.region.usable) return;
+    auto local_vpm = get(CGAL::vertex_point, local.region.mesh);
+    const auto local_np = parameters::extend(np_).vertex_point_map(local_vpm);
+    Hole_filler<Local_mesh, decltype(local_vpm), GeomTraits, std::decay_t<decltype(local_np)>>
+        filler(local.region.mesh, local_vpm, traits_, check_, local_np);
+    local.report = filler.fill(local.region.group, method, local.patch);
+  }
+
+  /// Adds the patch of `fill_locally` to the mesh and checks it against the whole mesh like
+  /// any patch. A hole the copy could not hold, or whose patch meets the mesh away from the
+  /// copy, is filled in place by `fill`; a hole no method could fill on the copy is reported
+  /// unfilled (the copy holds every face the methods and their checks look at).
+  Hole_fill_report splice(const Group& group, Fill_method method, Local_fill& local, Patch& patch) {
+    if (!local.region.usable) return fill(group, method, patch);
+    Hole_fill_report report = local.report;
+    report.faces_created = report.vertices_created = 0;
+    if (!report.filled) return report;
+    Transaction transaction(pm_, vpm_, all_cycles(group));
+    if (!splice_local_patch(pm_, vpm_, local.region, local.patch, movable_vertices(group), patch)) {
+      report.filled = false;
+      report.failure = "the patch could not be attached to the hole's border";
+    }
+    std::vector<Pinch_weld<PolygonMesh>> no_welds;
+    report = verify(report, group, patch, transaction, no_welds);
+    if (report.filled) return report;
+    Hole_fill_report in_place = fill(group, method, patch);
+    in_place.notes.push_back("the patch computed on a copy of the hole's surroundings was " +
+                             std::string("rejected in the mesh (") + report.failure +
+                             "); filled in place");
+    return in_place;
   }
 
   /// Fills every group with a method that takes all holes at once.
@@ -269,6 +332,16 @@ class Hole_filler {
     std::vector<halfedge_descriptor> cycles{group.outer};
     cycles.insert(cycles.end(), group.islands.begin(), group.islands.end());
     return cycles;
+  }
+
+  /// The vertices a method may move: the border vertices and their neighbours.
+  std::unordered_set<typename GT::vertex_descriptor> movable_vertices(const Group& group) const {
+    std::unordered_set<typename GT::vertex_descriptor> movable;
+    for (halfedge_descriptor cycle : all_cycles(group))
+      for (halfedge_descriptor h : halfedges_around_face(cycle, pm_))
+        for (halfedge_descriptor around : halfedges_around_target(target(h, pm_), pm_))
+          movable.insert(source(around, pm_)), movable.insert(target(around, pm_));
+    return movable;
   }
 
   static void append(Patch& to, const Patch& from) {
@@ -382,6 +455,58 @@ class Hole_filler {
   Face_box_cache<PolygonMesh, VertexPointMap> near_faces_;
 };
 
+/// Runs `task(0)` ... `task(n - 1)` on `threads` threads of TBB (0: TBB's default), or one
+/// after the other without TBB or with one thread.
+template <class Task>
+void for_each_index(std::size_t n, int threads, const Task& task) {
+#ifdef CGAL_LINKED_WITH_TBB
+  if (threads != 1 && n > 1) {
+    tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+    arena.execute([&] { tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) { task(i); }); });
+    return;
+  }
+#endif
+  (void)threads;
+  for (std::size_t i = 0; i < n; ++i) task(i);
+}
+
+/// Holes whose patches are computed together before they are spliced. A fixed number, not one
+/// per thread: a batch's copies see the patches of the batches before it, so the result must
+/// not depend on how many threads there are.
+constexpr std::size_t hole_batch_size = 32;
+
+/// Fills the `selected` groups by batches: each hole of a batch is filled on a copy of its
+/// surroundings, in parallel, then the patches are spliced into the mesh and checked one after
+/// the other in hole order. Whatever `threads`, each hole's patch is the same function of the
+/// mesh and the splices happen in the same order: the result is the same. Returns false when
+/// the visitor cancelled (the holes not spliced are reported skipped).
+template <class Filler, class Group, class Visitor, class PolygonMesh>
+bool fill_in_batches(Filler& filler, const std::vector<Group>& groups,
+                     const std::vector<std::size_t>& selected, Fill_method method, int threads,
+                     Visitor& visitor, Fill_result& result,
+                     std::vector<Fill_patch<PolygonMesh>>& patches) {
+  filler.build_face_boxes();
+  for (std::size_t begin = 0; begin < selected.size(); begin += hole_batch_size) {
+    const std::size_t end = std::min(selected.size(), begin + hole_batch_size);
+    std::vector<typename Filler::Local_fill> local(end - begin);
+    for_each_index(end - begin, threads, [&](std::size_t i) {
+      filler.fill_locally(groups[selected[begin + i]], method, local[i]);
+    });
+    for (std::size_t j = begin; j < end; ++j) {
+      if (!visitor.progress(double(j) / double(selected.size()))) {
+        for (std::size_t rest = j; rest < selected.size(); ++rest) {
+          result.holes[selected[rest]].skipped = true;
+          result.holes[selected[rest]].failure = "cancelled";
+        }
+        return false;
+      }
+      const std::size_t k = selected[j];
+      result.holes[k] = filler.splice(groups[k], method, local[j - begin], patches[k]);
+    }
+  }
+  return true;
+}
+
 /// Fills `groups` (all selected unless `select` says otherwise); reports in group order.
 template <class PolygonMesh, class NamedParameters>
 Fill_result fill_hole_groups(
@@ -409,6 +534,7 @@ Fill_result fill_hole_groups(
       choose_parameter(get_parameter(np, internal_np::hole_filter_t()), Accept_every_hole());
   const bool check =
       choose_parameter(get_parameter(np, internal_np::check_self_intersections_t()), true);
+  const int threads = choose_parameter(get_parameter(np, internal_np::number_of_threads_t()), 0);
   Default_visitor default_visitor;
   auto&& visitor =
       choose_parameter(get_parameter_reference(np, CGAL::internal_np::visitor), default_visitor);
@@ -452,17 +578,8 @@ Fill_result fill_hole_groups(
     }
     visitor.progress(1.0);
   } else {
-    for (std::size_t j = 0; j < selected.size(); ++j) {
-      if (!visitor.progress(double(j) / double(selected.size()))) {
-        result.cancelled = true;
-        for (std::size_t rest = j; rest < selected.size(); ++rest) {
-          result.holes[selected[rest]].skipped = true;
-          result.holes[selected[rest]].failure = "cancelled";
-        }
-        break;
-      }
-      result.holes[selected[j]] = filler.fill(groups[selected[j]], method, patches[selected[j]]);
-    }
+    result.cancelled =
+        !fill_in_batches(filler, groups, selected, method, threads, visitor, result, patches);
     if (!result.cancelled) visitor.progress(1.0);
   }
   visitor.end_step("fill holes");
@@ -530,6 +647,13 @@ std::vector<Hole_group<typename boost::graph_traits<PolygonMesh>::halfedge_descr
 ///       the mesh whose bounding box meets the patch's (earlier patches included) with CGAL's
 ///       exact `self_intersections`; only turn off for measurements}
 ///     \cgalParamType{bool} \cgalParamDefault{true}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_threads}
+///     \cgalParamDescription{threads (TBB) computing the patches of independent holes, each on
+///       a copy of its surroundings; the patches are then spliced and checked in hole order, so
+///       the mesh is the same for any number of threads (see doc/automatic_repair.md). Methods
+///       that fill all holes at once (`curvature_variation`) run on one thread}
+///     \cgalParamType{int} \cgalParamDefault{0: TBB's default (all cores)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{visitor}
 ///     \cgalParamDescription{progress and cancellation, see `Default_visitor`; one step

@@ -278,6 +278,7 @@ void step_fill_holes(PolygonMesh& pm, VertexPointMap vpm, const Repair_options& 
                                     .max_hole_size(fill.max_hole_size)
                                     .max_hole_edges(fill.max_hole_edges)
                                     .detect_ring_holes(fill.detect_ring_holes)
+                                    .number_of_threads(fill.threads)
                                     .visitor(std::ref(visitor)));
   result.holes_too_large = result.holes.skipped;
   if (result.holes.cancelled) result.cancelled = true;

@@ -16,6 +16,8 @@
 #include <CGAL/boost/graph/iterator.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <iterator>
 #include <unordered_set>
 #include <utility>
@@ -143,16 +145,32 @@ class Face_box_cache {
     built_ = true;
     faces_.reserve(num_faces(pm_));
     boxes_.reserve(num_faces(pm_));
-    for (face_descriptor f : faces(pm_)) add(f);
+    for (face_descriptor f : faces(pm_)) {
+      faces_.push_back(f);
+      boxes_.push_back(face_box(f));
+    }
+    build_grid();
   }
 
-  /// The faces (not in `exclude`) whose box overlaps `box`.
+  /// The faces (not in `exclude`) whose box overlaps `box`, in the order they entered the
+  /// cache (the order a scan of every box gives).
   template <class FaceSet>
   std::vector<face_descriptor> overlapping(const CGAL::Bbox_3& box, const FaceSet& exclude) const {
     CGAL_precondition(built_);
+    std::vector<std::size_t> candidates;
+    const std::array<std::size_t, 6> range = cell_range(box);
+    for (std::size_t x = range[0]; x <= range[3]; ++x)
+      for (std::size_t y = range[1]; y <= range[4]; ++y)
+        for (std::size_t z = range[2]; z <= range[5]; ++z) {
+          const std::vector<std::size_t>& cell =
+              cells_[(x * cells_per_axis_ + y) * cells_per_axis_ + z];
+          candidates.insert(candidates.end(), cell.begin(), cell.end());
+        }
+    std::sort(candidates.begin(), candidates.end());
+    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
     std::vector<face_descriptor> found;
     std::unordered_set<face_descriptor> seen;  // a moved face is in the cache twice
-    for (std::size_t i = 0; i < faces_.size(); ++i) {
+    for (std::size_t i : candidates) {
       if (CGAL::do_overlap(boxes_[i], box) && exclude.count(faces_[i]) == 0 &&
           seen.insert(faces_[i]).second)
         found.push_back(faces_[i]);
@@ -184,6 +202,41 @@ class Face_box_cache {
   void add(face_descriptor f) {
     faces_.push_back(f);
     boxes_.push_back(face_box(f));
+    insert_in_grid(faces_.size() - 1);
+  }
+
+  /// A uniform grid over the mesh's box, so that a query looks at the faces near it instead of
+  /// every face (a patch in a million-face mesh). Boxes outside the grid are clamped into its
+  /// border cells; cell indices grow with the coordinate, so every overlap is kept.
+  void build_grid() {
+    for (const CGAL::Bbox_3& box : boxes_) extent_ += box;
+    cells_per_axis_ = std::size_t(std::clamp(std::cbrt(double(boxes_.size())) / 1.5, 1.0, 96.0));
+    cells_.assign(cells_per_axis_ * cells_per_axis_ * cells_per_axis_, {});
+    for (std::size_t i = 0; i < boxes_.size(); ++i) insert_in_grid(i);
+  }
+
+  void insert_in_grid(std::size_t i) {
+    const std::array<std::size_t, 6> range = cell_range(boxes_[i]);
+    for (std::size_t x = range[0]; x <= range[3]; ++x)
+      for (std::size_t y = range[1]; y <= range[4]; ++y)
+        for (std::size_t z = range[2]; z <= range[5]; ++z)
+          cells_[(x * cells_per_axis_ + y) * cells_per_axis_ + z].push_back(i);
+  }
+
+  /// First and last cell per axis (x, y, z, then x, y, z) of the cells `box` meets.
+  std::array<std::size_t, 6> cell_range(const CGAL::Bbox_3& box) const {
+    std::array<std::size_t, 6> range{};
+    for (int d = 0; d < 3; ++d) {
+      const double length = extent_.max(d) - extent_.min(d);
+      const auto cell = [&](double t) {
+        const double u = (t - extent_.min(d)) / length * double(cells_per_axis_);
+        if (!(length > 0) || !(u > 0)) return std::size_t(0);
+        return std::size_t(std::min(u, double(cells_per_axis_ - 1)));
+      };
+      range[std::size_t(d)] = cell(box.min(d));
+      range[std::size_t(d) + 3] = cell(box.max(d));
+    }
+    return range;
   }
 
   const PolygonMesh& pm_;
@@ -191,6 +244,9 @@ class Face_box_cache {
   bool built_ = false;
   std::vector<face_descriptor> faces_;
   std::vector<CGAL::Bbox_3> boxes_;
+  CGAL::Bbox_3 extent_;
+  std::size_t cells_per_axis_ = 1;
+  std::vector<std::vector<std::size_t>> cells_;  ///< indices into faces_/boxes_
 };
 
 /// Pairs of intersecting faces with at least one patch face, among the patch, its ring and
