@@ -252,14 +252,16 @@ TEST(AdvancingFrontCore, ClosedFrontIsExactlyCheckedInItsFinalPositions) {
   EXPECT_FALSE(MI::advance_front(incomplete, onto_sphere, size, options).exactly_checked);
 }
 
-/// A face of another component pierces the hole's region: no surface spanning the hole avoids
-/// it, and since the front collects every face near the hole (not only the ring) and tests each
-/// new triangle against it, no patch is kept; the mesh is unchanged.
+/// A face of another component pierces the hole's region from the sphere's centre to far
+/// outside: a surface closing the sphere puts one end inside and the other outside, so it must
+/// cross the face (a sliver from z = 0.6 only was avoided by a patch dipping below it). Since
+/// the front collects every face near the hole (not only the ring) and tests each new triangle
+/// against it, no patch is kept; the mesh is unchanged.
 TEST(FillHoles, AdvancingFrontKeepsNoPatchThroughAFaceOfAnotherComponent) {
   Mesh mesh = sphere_with_hole(0.5);
-  const auto a = mesh.add_vertex(Point(0.02, 0.0, 0.6));
-  const auto b = mesh.add_vertex(Point(-0.02, 0.01, 0.6));
-  const auto c = mesh.add_vertex(Point(0.0, -0.01, 1.4));
+  const auto a = mesh.add_vertex(Point(0.02, 0.0, 0.0));
+  const auto b = mesh.add_vertex(Point(-0.02, 0.01, 0.0));
+  const auto c = mesh.add_vertex(Point(0.0, -0.01, 3.0));
   mesh.add_face(a, b, c);
   const std::size_t faces_before = mesh.number_of_faces();
   const auto border = *std::find_if(halfedges(mesh).begin(), halfedges(mesh).end(), [&](auto h) {

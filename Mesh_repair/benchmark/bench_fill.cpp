@@ -58,27 +58,52 @@ Mesh::Halfedge_index make_curved_annulus(Mesh& mesh, int n) {
   return mesh.is_border(h) ? h : mesh.opposite(h);
 }
 
+/// Mean length of the patch's edges over the mean length of the hole's border edges: 1 when the
+/// patch is as dense as its surroundings (thesis 4.4), below 1 when it is denser.
+double mean_edge_ratio(const Mesh& filled, const std::vector<Mesh::Face_index>& faces,
+                       const Mesh& original, Mesh::Halfedge_index border) {
+  const auto length = [](const Mesh& m, Mesh::Halfedge_index h) {
+    return std::sqrt(CGAL::squared_distance(m.point(m.source(h)), m.point(m.target(h))));
+  };
+  double border_sum = 0, patch_sum = 0;
+  std::size_t border_count = 0, patch_count = 0;
+  for (auto h : CGAL::halfedges_around_face(border, original)) {
+    border_sum += length(original, h);
+    ++border_count;
+  }
+  for (auto f : faces) {
+    for (auto h : CGAL::halfedges_around_face(filled.halfedge(f), filled)) {
+      patch_sum += length(filled, h);
+      ++patch_count;
+    }
+  }
+  if (patch_count == 0) return 0;
+  return (patch_sum / double(patch_count)) / (border_sum / double(border_count));
+}
+
 template <class Fill>
 void run(benchmark::State& state, Fill fill) {
   Mesh original;
   const auto border = make_curved_annulus(original, int(state.range(0)));
-  std::size_t faces = 0;
+  std::vector<Mesh::Face_index> faces;
+  Mesh mesh;
   for (auto _ : state) {
     state.PauseTiming();
-    Mesh mesh = original;
+    mesh = original;
     state.ResumeTiming();
     faces = fill(mesh, border);
-    benchmark::DoNotOptimize(faces);
+    benchmark::DoNotOptimize(faces.data());
   }
   state.counters["border_edges"] = double(state.range(0));
-  state.counters["faces_created"] = double(faces);
+  state.counters["faces_created"] = double(faces.size());
+  state.counters["edge_ratio"] = mean_edge_ratio(mesh, faces, original, border);
 }
 
 void BM_advancing_front(benchmark::State& state) {
   run(state, [](Mesh& mesh, Mesh::Halfedge_index border) {
     MR::Fill_patch<Mesh> patch;
     const auto report = MR::fill_hole_advancing_front(mesh, border, patch);
-    return report.filled ? patch.faces.size() : 0;
+    return report.filled ? patch.faces : std::vector<Mesh::Face_index>();
   });
 }
 
@@ -89,7 +114,7 @@ void BM_advancing_front_unchecked(benchmark::State& state) {
     MR::Fill_patch<Mesh> patch;
     const auto report = MR::fill_hole_advancing_front(
         mesh, border, patch, MR::parameters::check_self_intersections(false));
-    return report.filled ? patch.faces.size() : 0;
+    return report.filled ? patch.faces : std::vector<Mesh::Face_index>();
   });
 }
 
@@ -99,7 +124,7 @@ void BM_liepa(benchmark::State& state) {
     std::vector<Mesh::Vertex_index> vertices;
     CGAL::Polygon_mesh_processing::triangulate_refine_and_fair_hole(
         mesh, border, std::back_inserter(faces), std::back_inserter(vertices));
-    return faces.size();
+    return faces;
   });
 }
 
