@@ -252,6 +252,47 @@ TEST(AdvancingFrontCore, ClosedFrontIsExactlyCheckedInItsFinalPositions) {
   EXPECT_FALSE(MI::advance_front(incomplete, onto_sphere, size, options).exactly_checked);
 }
 
+/// Deferring the fans' 3D test to one test of the closed patch gives the same patch when no fan
+/// would have failed it, and a patch that is not `exactly_checked` when one would have.
+TEST(AdvancingFrontCore, DeferredThreeDimensionalTestGivesTheSamePatchOrFlagsIt) {
+  namespace MI = MR::internal;
+  Mesh mesh = sphere_with_hole(0.5);
+  const auto border = *std::find_if(halfedges(mesh).begin(), halfedges(mesh).end(),
+                                    [&](auto h) { return is_border(h, mesh); });
+  std::vector<Mesh::Vertex_index> point_vertices;
+  const MI::Front_input input =
+      MI::front_input_from_border(mesh, mesh.points(), border, point_vertices);
+  const MI::Front_size size = MI::border_density(input);
+  const auto onto_sphere = [](const MI::Vec3& p, const MI::Vec3&) { return MI::normalized(p); };
+  MI::Front_options options;
+  const MI::Front_triangulation checked = MI::advance_front(input, onto_sphere, size, options);
+  options.defer_3d_test = true;
+  const MI::Front_triangulation deferred = MI::advance_front(input, onto_sphere, size, options);
+  ASSERT_TRUE(checked.closed && deferred.closed);
+  EXPECT_TRUE(checked.exactly_checked && deferred.exactly_checked);
+  EXPECT_EQ(deferred.triangles, checked.triangles);
+  EXPECT_EQ(deferred.points, checked.points);
+
+  // A vertical wall standing in a square hole: the tangent-plane test does not see it, the
+  // final 3D test does.
+  MI::Front_input square;
+  square.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  square.normals = {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}, {0, 0, 1}};
+  square.cycle = {0, 1, 2, 3};
+  square.context_points = {{0.4, 0.6, -1}, {0.6, 0.4, -1}, {0.5, 0.5, 1}};
+  square.context_triangles = {{4, 5, 6}};
+  square.context_complete = true;
+  square.context_lo = {-1, -1, -1};
+  square.context_hi = {2, 2, 2};
+  const auto identity = [](const MI::Vec3& p, const MI::Vec3&) { return p; };
+  const auto unit = [](const MI::Vec3&, double) { return 1.0; };
+  const MI::Front_triangulation walled = MI::advance_front(square, identity, unit, options);
+  ASSERT_TRUE(walled.closed);
+  EXPECT_FALSE(walled.exactly_checked);
+  options.defer_3d_test = false;
+  EXPECT_FALSE(MI::advance_front(square, identity, unit, options).closed);
+}
+
 /// A face of another component pierces the hole's region from the sphere's centre to far
 /// outside: a surface closing the sphere puts one end inside and the other outside, so it must
 /// cross the face (a sliver from z = 0.6 only was avoided by a patch dipping below it). Since
@@ -488,6 +529,36 @@ TEST(FillCli, FillsASphereHoleExitsZeroAndWritesOneReportEntryPerHole) {
   const std::string bad = std::string(MESH_REPAIR_CLI) + " fill " + (dir / "in.off").string() +
                           " -o " + (dir / "x.off").string() + " --method nonsense 2>/dev/null";
   EXPECT_EQ(WEXITSTATUS(std::system(bad.c_str())), 2);
+  fs::remove_all(dir);
+}
+
+/// `--threads N` gives the same mesh as one thread, byte for byte; 0 is refused.
+TEST(FillCli, ThreadsOptionGivesTheSameOutputAndRefusesZero) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("mesh_repair_fill_threads_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  Mesh mesh = sphere_with_hole(0.3, 3);
+  punch_hole(mesh, Point(0, 0, -1), 0.3);
+  punch_hole(mesh, Point(1, 0, 0), 0.3);
+  ASSERT_EQ(MR::write_mesh((dir / "in.off").string(), mesh), "");
+  std::string outputs[2];
+  for (int threads : {1, 2}) {
+    const fs::path out = dir / ("out" + std::to_string(threads) + ".off");
+    const std::string command =
+        std::string(MESH_REPAIR_CLI) + " fill " + (dir / "in.off").string() + " -o " +
+        out.string() + " --method advancing_front --quiet --threads " + std::to_string(threads);
+    ASSERT_EQ(std::system(command.c_str()), 0) << command;
+    std::ifstream in(out);
+    std::stringstream text;
+    text << in.rdbuf();
+    outputs[threads - 1] = text.str();
+  }
+  EXPECT_FALSE(outputs[0].empty());
+  EXPECT_EQ(outputs[0], outputs[1]);
+  const std::string bad = std::string(MESH_REPAIR_CLI) + " fill " + (dir / "in.off").string() +
+                          " -o " + (dir / "x.off").string() + " --threads 0 2>/dev/null";
+  EXPECT_EQ(WEXITSTATUS(std::system(bad.c_str())), 2);
+  EXPECT_FALSE(fs::exists(dir / "x.off"));
   fs::remove_all(dir);
 }
 #endif

@@ -8,6 +8,7 @@
 #include <CGAL/Mesh_repair/fill_holes.h>
 #include <CGAL/Mesh_repair/io.h>
 
+#include <algorithm>
 #include <fstream>
 #include <functional>
 #include <iostream>
@@ -19,7 +20,7 @@ const char* const fill_help =
     "usage: mesh_repair fill IN -o OUT\n"
     "           [--method advancing_front|liepa|shape_prediction|curvature_variation|auto]\n"
     "           [--continuity 0|1|2] [--max-hole-edges N] [--max-hole-size F] [--seed S]\n"
-    "           [--no-ring-holes] [--report R.json] [--quiet]\n"
+    "           [--no-ring-holes] [--threads N] [--report R.json] [--quiet]\n"
     "           [--objective forces|force_variation] [--nodes free|free_and_contour]\n"
     "           [--grid disc|refined_liepa] [--force-density uniform|inverse_length|cotangent]\n"
     "           [--constraints FILE]\n"
@@ -36,6 +37,8 @@ const char* const fill_help =
     "  --max-hole-size F    leave holes wider than F x bounding-box diagonal open\n"
     "  --seed S             random seed of the randomised methods (default 0)\n"
     "  --no-ring-holes      fill every border cycle on its own (no island detection)\n"
+    "  --threads N          threads for independent holes (default: all cores); the output\n"
+    "                       is the same for every N\n"
     "  --report R.json      write one JSON entry per hole\n"
     "  --quiet              no progress bar, no summary\n"
     "curvature_variation (Pernot et al., doc/curvature_variation.md):\n"
@@ -116,10 +119,10 @@ Curvature_options parse_curvature_options(const Arguments& arguments) {
 
 int run_fill(const std::vector<std::string>& args) {
   namespace MR = CGAL::Mesh_repair;
-  Arguments arguments(
-      args, {"--quiet", "--no-ring-holes"},
-      {"-o", "--method", "--continuity", "--max-hole-edges", "--max-hole-size", "--seed",
-       "--report", "--objective", "--nodes", "--grid", "--force-density", "--constraints"});
+  Arguments arguments(args, {"--quiet", "--no-ring-holes"},
+                      {"-o", "--method", "--continuity", "--max-hole-edges", "--max-hole-size",
+                       "--seed", "--threads", "--report", "--objective", "--nodes", "--grid",
+                       "--force-density", "--constraints"});
   const std::string input = arguments.single_input(fill_help);
   if (!arguments.has("-o")) throw Input_error("missing -o OUT; usage: " + std::string(fill_help));
   const MR::Fill_method method = parse_method(arguments.get("--method", "auto"));
@@ -133,6 +136,8 @@ int run_fill(const std::vector<std::string>& args) {
     throw Input_error("--max-hole-size must be positive");
   const long long seed = arguments.get_int("--seed", 0);
   if (seed < 0) throw Input_error("--seed must be non-negative");
+  const long long threads = arguments.get_int("--threads", 0);
+  if (arguments.has("--threads") && threads < 1) throw Input_error("--threads must be positive");
 
   const Curvature_options curvature = parse_curvature_options(arguments);
 
@@ -149,6 +154,7 @@ int run_fill(const std::vector<std::string>& args) {
                                               : std::size_t(max_edges))
                 .max_hole_size(max_size < 0 ? std::numeric_limits<double>::infinity() : max_size)
                 .random_seed(unsigned(seed))
+                .number_of_threads(int(std::min<long long>(threads, 1024)))
                 .detect_ring_holes(!arguments.has("--no-ring-holes"))
                 .visitor(std::ref(progress))
                 .curvature_objective(curvature.objective)

@@ -129,9 +129,10 @@ inline Front_size border_density(const Front_input& input) {
     double weights = 0, blend = 0;
     for (const auto& sample : *samples) {
       const double d2 = dot(sub(at, sample.first), sub(at, sample.first));
-      if (d2 == 0) return sample.second;
-      weights += 1.0 / d2;
-      blend += sample.second / d2;
+      if (d2 == 0) return front_spacing_factor * sample.second;
+      const double weight = 1.0 / d2;
+      weights += weight;
+      blend += sample.second * weight;
     }
     return front_spacing_factor * (weights > 0 ? blend / weights : adjacent);
   };
@@ -312,8 +313,17 @@ Hole_fill_report fill_hole_advancing_front(
                       : internal::Front_size([&size, factor](const Vec3& p, double adjacent) {
                           return factor * size(p, adjacent);
                         });
+    // The first attempt defers the fans' 3D test to one test of the closed patch (most holes
+    // pass it: half the exact tests); when that test fails, the front reruns with it.
+    variant_options.defer_3d_test =
+        &variant == &variants.front() && !variant.remnant && input.context_complete;
     internal::Front_triangulation triangulation = internal::advance_front(
         input, projections[variant.projection].first, variant_size, variant_options);
+    if (variant_options.defer_3d_test && !(triangulation.closed && triangulation.exactly_checked)) {
+      variant_options.defer_3d_test = false;
+      triangulation = internal::advance_front(input, projections[variant.projection].first,
+                                              variant_size, variant_options);
+    }
     remnant_edges = triangulation.remnant_edges;
     if (!triangulation.closed) {
       if (first_failure.empty()) first_failure = triangulation.failure;

@@ -76,6 +76,14 @@ struct Front_options {
   /// The size function ignores its second argument (the mean adjacent front edge length), so
   /// the front computes it once per node.
   bool size_from_position_only = false;
+  /// Leave out the 3D test of each fan against the triangles already there (the tangent-plane
+  /// test against the front stays) and test the closed patch once, in its final positions, with
+  /// `recheck_patch`: on a hole where no fan would have failed the 3D test the patch is the
+  /// same, for half the exact tests. The patch is `exactly_checked` only when that final test
+  /// passed; a caller reruns the front without this option when it did not (see
+  /// `fill_hole_advancing_front`). Not with `close_remnant`, whose triangulation needs the 3D
+  /// test: a stuck front simply fails.
+  bool defer_3d_test = false;
 };
 
 /// `points` starts with the input's border points; `triangles` index into it, in creation order
@@ -291,7 +299,7 @@ class Advancing_front {
     result.closed = alive_ == 0;
     if (result.closed) smooth();
     if (!result.closed) result.remnant = open_loops();
-    if (!result.closed && options_.close_remnant) {
+    if (!result.closed && options_.close_remnant && !options_.defer_3d_test) {
       result.remnant_edges = 0;
       for (const auto& loop : result.remnant) result.remnant_edges += loop.size();
       bool all = true;
@@ -530,6 +538,7 @@ class Advancing_front {
         }
       }
     }
+    if (options_.defer_3d_test) return true;
     // 3D: the fan's triangles against each other and against the triangles already there.
     Small_list<Stored_triangle, 3> candidates;
     for (const auto& t : fan.triangles) {
@@ -577,10 +586,12 @@ class Advancing_front {
     }
     for (std::int64_t i = lo[0]; i <= hi[0]; ++i)
       for (std::int64_t j = lo[1]; j <= hi[1]; ++j)
-        for (std::int64_t k = lo[2]; k <= hi[2]; ++k)
-          f((std::uint64_t(i & 0x1fffff) << 42) | (std::uint64_t(j & 0x1fffff) << 21) |
-            std::uint64_t(k & 0x1fffff));
+        for (std::int64_t k = lo[2]; k <= hi[2]; ++k) f(triangle_cell_key({i, j, k}));
     return true;
+  }
+  static std::uint64_t triangle_cell_key(const std::array<std::int64_t, 3>& c) {
+    return (std::uint64_t(c[0] & 0x1fffff) << 42) | (std::uint64_t(c[1] & 0x1fffff) << 21) |
+           std::uint64_t(c[2] & 0x1fffff);
   }
 
   static constexpr std::size_t not_stored = std::size_t(-1);
@@ -592,7 +603,8 @@ class Advancing_front {
     const std::size_t index = stored_.size();
     stored_.push_back(stored);
     visit_stamp_.push_back(0);
-    register_in_cells(index);
+    // Deferred: nothing queries the grid before `recheck_patch`, which files every triangle.
+    if (!options_.defer_3d_test) register_in_cells(index);
     return index;
   }
   /// A grid entry: a stored triangle and its box rounded outwards to floats, so that a scan of
@@ -1048,8 +1060,14 @@ class Advancing_front {
   /// finished by the projection: evens out the triangles without shrinking the patch. The moved
   /// triangles are then tested again (`recheck_patch`), so the patch stays exactly checked.
   void smooth() {
+    const bool relax = options_.smoothing_iterations > 0 && points_.size() > border_count_;
+    if (relax) relax_new_nodes();
+    // The fans' 3D test saw the nodes where they were created, or was deferred to here.
+    if ((relax || options_.defer_3d_test) && !recheck_patch()) unchecked_ = true;
+  }
+
+  void relax_new_nodes() {
     const std::size_t count = points_.size();
-    if (options_.smoothing_iterations <= 0 || count == border_count_) return;
     // Each new node's neighbours, in one array (a node's triangle corners, each neighbour met
     // twice around an interior node: the duplicates weigh every neighbour equally).
     std::vector<std::size_t> first(count - border_count_ + 1, 0);
@@ -1080,7 +1098,6 @@ class Advancing_front {
         points_[p] = project_(add(points_[p], move), n);
       }
     }
-    if (!recheck_patch()) unchecked_ = true;
   }
 
   /// After the relaxation moved the new nodes: every triangle of the patch, at its final
@@ -1101,15 +1118,39 @@ class Advancing_front {
     for (auto& cell : triangle_grid_) cell.second.clear();
     large_.clear();
     for (std::size_t index = 0; index < stored_.size(); ++index) register_in_cells(index);
-    for (std::size_t stored = first_patch; stored < stored_.size(); ++stored) {
-      const Stored_triangle& t = stored_[stored];
-      ++visit_;
-      const bool meets = any_stored_near(t.box, [&](std::size_t index) {
-        if (index >= first_patch && index <= stored) return false;  // this pair: tested once
-        const Stored_triangle& other = stored_[index];
-        return CGAL::do_overlap(t.box, other.box) && triangles_meet(t.ids, t.corners, other);
-      });
-      if (meets) return false;
+    // A pair of triangles (not both of the context) is tested when their boxes overlap; both are
+    // filed in the cell holding the lowest corner of the boxes' intersection, and the pair is
+    // tested there only, so once. One pass over each cell's list instead of a query per triangle.
+    // Each list is in index order (filed above in that order), the context's triangles first.
+    const auto meets = [&](std::size_t i, std::size_t j) {
+      if (i < first_patch && j < first_patch) return false;
+      const Stored_triangle &a = stored_[i], &b = stored_[j];
+      return CGAL::do_overlap(a.box, b.box) && triangles_meet(a.ids, a.corners, b);
+    };
+    for (const auto& [cell, entries] : triangle_grid_) {
+      const auto patch_begin = std::partition_point(
+          entries.begin(), entries.end(),
+          [first_patch](const Cell_entry& e) { return e.index < first_patch; });
+      for (auto i = patch_begin; i != entries.end(); ++i) {
+        for (auto j = entries.begin(); j != i; ++j) {
+          if (!float_boxes_overlap(i->box, j->box)) continue;
+          const CGAL::Bbox_3 &a = stored_[i->index].box, &b = stored_[j->index].box;
+          std::array<std::int64_t, 3> lowest;
+          for (int d = 0; d < 3; ++d)
+            lowest[d] = std::int64_t(std::floor(std::max(a.min(d), b.min(d)) / triangle_cell_));
+          if (triangle_cell_key(lowest) != cell) continue;
+          if (meets(i->index, j->index)) return false;
+        }
+      }
+    }
+    // Triangles too large for the grid, against every other (two large ones: once).
+    std::vector<bool> large(stored_.size(), false);
+    for (std::size_t index : large_) large[index] = true;
+    for (std::size_t l : large_) {
+      for (std::size_t index = 0; index < stored_.size(); ++index) {
+        if (index == l || (large[index] && index < l)) continue;
+        if (meets(l, index)) return false;
+      }
     }
     return true;
   }
