@@ -88,7 +88,11 @@ TEST(CurvatureVariation, SphereCapForceVariationHasLowerEinfThanForces) {
     EXPECT_TRUE(CGAL::is_closed(mesh));
     einf[k++] = sphere_einf(mesh, patch);
   }
-  EXPECT_LT(einf[1], 0.5 * einf[0]);
+  // Since issue 5 the initial grid is relaxed and the weights are not re-measured: on this large
+  // ball-shaped cap (a planar contour, a flat initial grid) phi_DeltaF's Einf is 0.00169 against
+  // 0.00336 for phi_F (it was below half with the re-measured weights; see
+  // doc/curvature_variation.md, "Initial grid").
+  EXPECT_LT(einf[1], 0.6 * einf[0]);
   EXPECT_LT(einf[1], 0.01);
 }
 
@@ -278,6 +282,61 @@ TEST(CurvatureVariation, RemeasuredWeightsBringALargeSphereCapCloserToTheSphere)
   }
   EXPECT_LT(einf[1], 0.75 * einf[0]);
   EXPECT_LT(einf[1], 0.005);
+}
+
+// The initial grid is relaxed tangentially before the cotangent densities and the vertex areas are
+// measured on it: on a plane the vertices stay in the plane, the contour does not move, and the
+// worst triangle of Liepa's refined triangulation gets better.
+TEST(CurvatureVariation, InitialGridRelaxationIsTangentialAndKeepsTheContour) {
+  Mesh mesh;
+  MR::make_height_field<Mesh, Point>(mesh, -1, 1, -1, 1, 20, 20,
+                                     [](double, double) { return 0.0; });
+  const halfedge_descriptor border = cv::punch_ball_hole(mesh, Point(0.05, 0.02, 0), 0.5);
+  ASSERT_EQ(border_cycles(mesh), 2u);
+  std::vector<Point> contour;
+  for (auto h : CGAL::halfedges_around_face(border, mesh))
+    contour.push_back(mesh.point(target(h, mesh)));
+  MR::Fill_patch<Mesh> patch;
+  CGAL::Polygon_mesh_processing::triangulate_and_refine_hole(
+      mesh, border, std::back_inserter(patch.faces), std::back_inserter(patch.vertices));
+  ASSERT_GT(patch.vertices.size(), 10u);
+  auto smallest_angle = [&]() {
+    double smallest = 180;
+    for (auto f : patch.faces) {
+      std::vector<cv::Vec> p;
+      for (auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+        p.push_back(cv::vec(mesh.point(v)));
+      for (int k = 0; k < 3; ++k) {
+        const cv::Vec u = cv::minus(p[(k + 1) % 3], p[k]), w = cv::minus(p[(k + 2) % 3], p[k]);
+        smallest = std::min(smallest,
+                            std::atan2(cv::length(cv::cross_product(u, w)), cv::dot_product(u, w)) *
+                                180.0 / CGAL_PI);
+      }
+    }
+    return smallest;
+  };
+  const double before = smallest_angle();
+  cv::relax_tangentially(mesh, mesh.points(), patch.vertices, cv::default_initial_grid_relaxation);
+  EXPECT_GT(smallest_angle(), before);
+  for (auto v : patch.vertices) EXPECT_EQ(CGAL::to_double(mesh.point(v).z()), 0.0);
+  for (const Point& p : contour) {
+    bool found = false;
+    for (auto v : vertices(mesh)) found = found || mesh.point(v) == p;
+    EXPECT_TRUE(found);
+  }
+
+  // The public function relaxes the grid, solves once and does not re-measure the weights.
+  Mesh sphere;
+  halfedge_descriptor cap;
+  sphere = sphere_with_cap_hole(cap);
+  MR::Fill_patch<Mesh> cap_patch;
+  MR::Curvature_deformation_report deformation;
+  const auto report = MR::fill_hole_curvature_variation(
+      sphere, cap, cap_patch, MR::parameters::deformation_report(&deformation));
+  ASSERT_TRUE(report.filled) << report.failure;
+  EXPECT_EQ(deformation.factorizations, 1u);
+  EXPECT_EQ(deformation.weight_remeasurements, 0u);
+  EXPECT_LT(sphere_einf(sphere, cap_patch), 0.01);
 }
 
 }  // namespace

@@ -82,6 +82,10 @@ Curvature_deformation_report deform_patches_curvature_variation(
       choose_parameter(get_parameter(np, internal_np::force_density_t()), Force_density::cotangent);
   options.area_normalized =
       choose_parameter(get_parameter(np, internal_np::area_normalized_forces_t()), true);
+  // The initial grid is relaxed tangentially before its densities and areas are measured, and the
+  // system is solved once with them (doc/curvature_variation.md, "Initial grid").
+  options.initial_grid_relaxation = internal::curvature_variation::default_initial_grid_relaxation;
+  options.remeasure_weights = false;
   const Fill_constraints<Point> constraints = choose_parameter(
       get_parameter(np, internal_np::fill_constraints_t()), Fill_constraints<Point>());
   Default_visitor default_visitor;

@@ -12,6 +12,7 @@
 
 #include <CGAL/Mesh_repair/internal/curvature_variation/constraints.h>
 #include <CGAL/Mesh_repair/internal/curvature_variation/force_density_system.h>
+#include <CGAL/Mesh_repair/internal/curvature_variation/measures.h>
 #include <CGAL/Mesh_repair/internal/curvature_variation/nested_dissection.h>
 
 #include <Eigen/QR>
@@ -164,6 +165,47 @@ class Preconditioned_solver {
   mutable std::size_t iterations_ = 0;
 };
 
+/// Tangential relaxation of the free vertices (Jacobi steps): each moves towards the centroid of
+/// its neighbours, within the plane orthogonal to the area-weighted normal of its faces. The
+/// blocked vertices (the contour and beyond) do not move. On a planar grid the vertices stay in
+/// the plane; it only evens out the triangle shapes on which the cotangent densities and the
+/// vertex areas are measured.
+template <class PolygonMesh, class VertexPointMap>
+void relax_tangentially(
+    PolygonMesh& pm, VertexPointMap vpm,
+    const std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor>& free,
+    int steps) {
+  using Point = typename boost::property_traits<VertexPointMap>::value_type;
+  std::vector<Vec> moved(free.size());
+  for (int step = 0; step < steps; ++step) {
+    for (std::size_t i = 0; i < free.size(); ++i) {
+      const Vec x = vec(get(vpm, free[i]));
+      Vec centroid{0, 0, 0}, normal{0, 0, 0};
+      int neighbours = 0;
+      for (auto h : CGAL::halfedges_around_target(halfedge(free[i], pm), pm)) {
+        const Vec u = vec(get(vpm, source(h, pm)));
+        for (int d = 0; d < 3; ++d) centroid[d] += u[d];
+        ++neighbours;
+        if (is_border(h, pm)) continue;
+        const Vec w = vec(get(vpm, target(next(h, pm), pm)));
+        const Vec n = cross_product(minus(x, u), minus(w, u));
+        for (int d = 0; d < 3; ++d) normal[d] += n[d];
+      }
+      Vec step_vector{0, 0, 0};
+      if (neighbours > 0)
+        for (int d = 0; d < 3; ++d) step_vector[d] = centroid[d] / neighbours - x[d];
+      const double squared_normal = dot_product(normal, normal);
+      if (squared_normal > 0) {
+        const double t = dot_product(step_vector, normal) / squared_normal;
+        for (int d = 0; d < 3; ++d) step_vector[d] -= t * normal[d];
+      }
+      moved[i] = {x[0] + step_vector[0], x[1] + step_vector[1], x[2] + step_vector[2]};
+    }
+    for (std::size_t i = 0; i < free.size(); ++i)
+      put(vpm, free[i], Point(moved[i][0], moved[i][1], moved[i][2]));
+  }
+}
+
 /// The normal system H x = B of the objective, with the force densities and areas measured on
 /// the current positions of the mesh.
 template <class PolygonMesh, class VertexPointMap>
@@ -202,6 +244,26 @@ Curvature_deformation_report deform_patches(PolygonMesh& pm, VertexPointMap vpm,
   Curvature_deformation_report report;
   auto start = std::chrono::steady_clock::now();
   visitor.start_step("curvature variation: assembly");
+  // The relaxation moves the free vertices before the solve: they are put back on failure.
+  std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor> all_free;
+  std::vector<Point> inserted;
+  if (options.initial_grid_relaxation > 0) {
+    for (const auto& patch : patches)
+      all_free.insert(all_free.end(), patch.vertices.begin(), patch.vertices.end());
+    for (auto v : all_free) inserted.push_back(get(vpm, v));
+    relax_tangentially(pm, vpm, all_free, options.initial_grid_relaxation);
+  }
+  struct Restore_on_failure {
+    PolygonMesh& pm;
+    VertexPointMap vpm;
+    const std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor>& vertices;
+    const std::vector<Point>& points;
+    const Curvature_deformation_report& report;
+    ~Restore_on_failure() {
+      if (!report.solved)
+        for (std::size_t i = 0; i < points.size(); ++i) put(vpm, vertices[i], points[i]);
+    }
+  } restore{pm, vpm, all_free, inserted, report};
   System system(pm, vpm, patches, options);
   report.free_vertices = system.free_count();
   report.contour_vertices = system.contour_count();

@@ -42,8 +42,13 @@ struct System_options {
   Objective_nodes nodes = Objective_nodes::free_and_contour_nodes;
   Force_density density = Force_density::uniform;
   bool area_normalized = false;  // sum f_i / A_i (a pressure) instead of f_i
-  // Re-measure the densities and areas on the first solution and solve again (deform.h).
+  // Re-measure the densities and areas on the first solution and solve again (deform.h). Off in
+  // the public functions: it helps on smooth analytic surfaces, it hurts on scans (see
+  // doc/curvature_variation.md, "Initial grid").
   bool remeasure_weights = true;
+  // Jacobi steps of tangential relaxation of the free vertices before the densities and areas are
+  // measured on the initial grid (deform.h). 0: the grid as inserted.
+  int initial_grid_relaxation = 0;
 };
 
 /// A sparse linear combination of node positions.
@@ -55,6 +60,9 @@ struct Linear_row {
 // Cotangent force densities are clamped here (the mean of (cot a + cot b) / 2 is about 0.58 on a
 // regular mesh): keeps every bar in tension, so D stays a positive weighted Laplacian.
 constexpr double minimum_cotangent_density = 0.03;
+
+// Steps of tangential relaxation of the initial grid in the public functions (deform.h).
+constexpr int default_initial_grid_relaxation = 3;
 
 template <class PolygonMesh, class VertexPointMap>
 class Force_density_system {
