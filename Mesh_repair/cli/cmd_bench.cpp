@@ -18,7 +18,9 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <sstream>
+#include <tuple>
 
 namespace mesh_repair_cli {
 
@@ -164,6 +166,8 @@ MR::Hole_fill_report fill_one(Mesh& mesh, halfedge_descriptor border, const Meth
 struct Row {
   std::string mesh, method, failure;
   double radius = 0;
+  unsigned int seed = 0;
+  std::size_t hole = 0;
   bool filled = false, closed = false, self_intersecting = false;
   bool analytic = false;
   std::map<std::string, double> values;
@@ -252,6 +256,8 @@ void write_row(std::ostream& out, const Case_context& context, const Options& op
   row.method = method.name;
   row.failure = report.failure;
   row.radius = radius;
+  row.seed = seed;
+  row.hole = hole_index;
   row.analytic = context.analytic;
   row.filled = m.filled;
   row.closed = m.closed;
@@ -421,6 +427,37 @@ void surface_kind_table(std::ostream& out, const std::vector<Row>& rows) {
   }
 }
 
+// Medians over the holes that every method closed: each method measured on the same holes, so a
+// method that closes a hard hole the others leave open is not penalised for it.
+void common_holes_table(std::ostream& out, const std::vector<Row>& rows) {
+  const std::vector<std::string> methods = method_order(rows);
+  using Hole_key = std::tuple<std::string, double, unsigned int, std::size_t>;
+  std::map<Hole_key, std::size_t> closed_by;
+  for (const Row& row : rows)
+    if (row.closed) ++closed_by[Hole_key(row.mesh, row.radius, row.seed, row.hole)];
+  const auto common = [&](const Row& row) {
+    const auto it = closed_by.find(Hole_key(row.mesh, row.radius, row.seed, row.hole));
+    return it != closed_by.end() && it->second == methods.size();
+  };
+  std::size_t holes = 0;
+  for (const Row& row : rows) holes += row.method == methods.front() && common(row);
+  out << "\nMedians over the " << holes << " holes closed by every method:\n\n";
+  out << "| method | Einf/diag | E2/diag | curvature jump x diag | normal dev. max (deg) | "
+         "min angle (deg) | time (s) |\n|---|---|---|---|---|---|---|\n";
+  for (const std::string& method : methods) {
+    out << "| " << method << " |";
+    for (const char* key : {"einf_rel", "e2_rel", "curvature_jump", "normal_deviation_max_deg",
+                            "min_angle_deg", "seconds"}) {
+      std::vector<double> values;
+      for (const Row& row : rows)
+        if (row.method == method && common(row) && std::isfinite(row.values.at(key)))
+          values.push_back(row.values.at(key));
+      out << ' ' << format(median(values)) << " |";
+    }
+    out << '\n';
+  }
+}
+
 // Why holes stayed open, per method: each distinct reason with its count.
 void failure_list(std::ostream& out, const std::vector<Row>& rows) {
   std::map<std::pair<std::string, std::string>, std::size_t> reasons;
@@ -446,6 +483,7 @@ std::string table_markdown(const std::vector<Row>& rows, const std::string& comm
   per_case_table(out, rows);
   out << "\nMedians on the analytic surfaces and on the meshes read from files:\n\n";
   surface_kind_table(out, rows);
+  common_holes_table(out, rows);
   failure_list(out, rows);
   for (const std::string& w : warnings) out << "\nNote: " << w << '\n';
   return out.str();

@@ -287,12 +287,17 @@ Hole_fill_report fill_hole_advancing_front(
     if (options.smoothing_iterations > 0) variants.push_back({p, 0, false, 1.0});
   }
   // A stuck front depends on where its layers happened to meet: other element sizes meet
-  // elsewhere.
+  // elsewhere. Without the closing of stuck fronts (the automatic method, which falls back to
+  // Liepa instead) the other sizes are still tried, with the front alone.
   const bool close_stuck =
       choose_parameter(get_parameter(np, internal_np::close_stuck_front_t()), true);
   for (double factor : {1.0, 0.85, 1.2, 0.7, 1.4}) {
-    for (std::size_t p = 0; p < projections.size() && close_stuck; ++p)
-      variants.push_back({p, options.smoothing_iterations, true, factor});
+    for (std::size_t p = 0; p < projections.size(); ++p) {
+      if (close_stuck)
+        variants.push_back({p, options.smoothing_iterations, true, factor});
+      else if (factor != 1.0)
+        variants.push_back({p, options.smoothing_iterations, false, factor});
+    }
   }
 
   // The same exact check as the dispatcher's: the patch against itself, its ring and every face
