@@ -176,9 +176,12 @@ class Bezier_patch_network {
                        const std::vector<std::array<int, 3>>& triangles)
       : points_(points), triangles_(triangles) {
     patches_.reserve(triangles.size());
-    for (const auto& t : triangles)
+    frames_.reserve(triangles.size());
+    for (const auto& t : triangles) {
       patches_.emplace_back(std::array<Point_3, 3>{points[t[0]], points[t[1]], points[t[2]]},
                             std::array<Vector_3, 3>{normals[t[0]], normals[t[1]], normals[t[2]]});
+      frames_.push_back(make_frame(points[t[0]], points[t[1]], points[t[2]]));
+    }
   }
 
   std::size_t size() const { return patches_.size(); }
@@ -189,12 +192,19 @@ class Bezier_patch_network {
   /// network, its barycentric coordinates there (clamped into the triangle when x' falls
   /// outside every triangle), and the patch point with those coordinates.
   Point_3 map(const Point_3& x) const {
+    const double p[3] = {CGAL::to_double(x.x()), CGAL::to_double(x.y()), CGAL::to_double(x.z())};
     std::size_t best = 0;
     std::array<double, 3> best_bary{1.0 / 3, 1.0 / 3, 1.0 / 3};
     double best_distance = std::numeric_limits<double>::infinity();
-    for (std::size_t t = 0; t < triangles_.size(); ++t) {
+    for (std::size_t t = 0; t < frames_.size(); ++t) {
+      const Frame& f = frames_[t];
+      // The closest point lies in the triangle, within `radius` of its centroid: skip the
+      // triangles that cannot be nearer than the best so far.
+      const double to_centre = std::sqrt(squared(p[0] - f.centre[0]) + squared(p[1] - f.centre[1]) +
+                                         squared(p[2] - f.centre[2]));
+      if (to_centre > f.radius && squared(to_centre - f.radius) > best_distance) continue;
       std::array<double, 3> bary{1.0 / 3, 1.0 / 3, 1.0 / 3};
-      const double d = projected_distance(t, x, bary);
+      const double d = projected_distance(f, p, bary);
       if (d < best_distance) {
         best_distance = d;
         best = t;
@@ -205,20 +215,45 @@ class Bezier_patch_network {
   }
 
  private:
+  // A triangle of the network in doubles: corner a, edges ab and ac, their Gram matrix, and a
+  // bounding sphere.
+  struct Frame {
+    double a[3], ab[3], ac[3], d00, d01, d11, det, centre[3], radius;
+  };
+  static double squared(double x) { return x * x; }
+
+  static Frame make_frame(const Point_3& pa, const Point_3& pb, const Point_3& pc) {
+    Frame f;
+    const double a[3] = {CGAL::to_double(pa.x()), CGAL::to_double(pa.y()), CGAL::to_double(pa.z())};
+    const double b[3] = {CGAL::to_double(pb.x()), CGAL::to_double(pb.y()), CGAL::to_double(pb.z())};
+    const double c[3] = {CGAL::to_double(pc.x()), CGAL::to_double(pc.y()), CGAL::to_double(pc.z())};
+    for (int k = 0; k < 3; ++k) {
+      f.a[k] = a[k];
+      f.ab[k] = b[k] - a[k];
+      f.ac[k] = c[k] - a[k];
+      f.centre[k] = (a[k] + b[k] + c[k]) / 3;
+    }
+    f.d00 = f.ab[0] * f.ab[0] + f.ab[1] * f.ab[1] + f.ab[2] * f.ab[2];
+    f.d01 = f.ab[0] * f.ac[0] + f.ab[1] * f.ac[1] + f.ab[2] * f.ac[2];
+    f.d11 = f.ac[0] * f.ac[0] + f.ac[1] * f.ac[1] + f.ac[2] * f.ac[2];
+    f.det = f.d00 * f.d11 - f.d01 * f.d01;
+    f.radius = 0;
+    for (const double* q : {a, b, c})
+      f.radius =
+          std::max(f.radius, std::sqrt(squared(q[0] - f.centre[0]) + squared(q[1] - f.centre[1]) +
+                                       squared(q[2] - f.centre[2])));
+    return f;
+  }
+
   // Squared distance from x to its closest point on triangle t, with that point's barycentric
   // coordinates (the normal projection when it falls inside, eq. 5.31).
-  double projected_distance(std::size_t t, const Point_3& x, std::array<double, 3>& bary) const {
-    const Point_3& a = points_[triangles_[t][0]];
-    const Point_3& b = points_[triangles_[t][1]];
-    const Point_3& c = points_[triangles_[t][2]];
-    const Vector_3 ab = b - a, ac = c - a, ax = x - a;
-    const double d00 = CGAL::to_double(ab * ab), d01 = CGAL::to_double(ab * ac),
-                 d11 = CGAL::to_double(ac * ac);
-    const double d20 = CGAL::to_double(ax * ab), d21 = CGAL::to_double(ax * ac);
-    const double det = d00 * d11 - d01 * d01;
-    if (!(det > 0)) return std::numeric_limits<double>::infinity();
-    double v = (d11 * d20 - d01 * d21) / det;
-    double w = (d00 * d21 - d01 * d20) / det;
+  static double projected_distance(const Frame& f, const double* x, std::array<double, 3>& bary) {
+    if (!(f.det > 0)) return std::numeric_limits<double>::infinity();
+    const double ax[3] = {x[0] - f.a[0], x[1] - f.a[1], x[2] - f.a[2]};
+    const double d20 = ax[0] * f.ab[0] + ax[1] * f.ab[1] + ax[2] * f.ab[2];
+    const double d21 = ax[0] * f.ac[0] + ax[1] * f.ac[1] + ax[2] * f.ac[2];
+    double v = (f.d11 * d20 - f.d01 * d21) / f.det;
+    double w = (f.d00 * d21 - f.d01 * d20) / f.det;
     double u = 1 - v - w;
     if (u < 0 || v < 0 || w < 0) {
       u = std::max(u, 0.0);
@@ -230,14 +265,15 @@ class Bezier_patch_network {
       w /= s;
     }
     bary = {u, v, w};
-    const Point_3 p =
-        CGAL::ORIGIN + u * (a - CGAL::ORIGIN) + v * (b - CGAL::ORIGIN) + w * (c - CGAL::ORIGIN);
-    return CGAL::to_double(CGAL::squared_distance(x, p));
+    double d = 0;
+    for (int k = 0; k < 3; ++k) d += squared(ax[k] - v * f.ab[k] - w * f.ac[k]);
+    return d;
   }
 
   std::vector<Point_3> points_;
   std::vector<std::array<int, 3>> triangles_;
   std::vector<Quartic_triangle_patch<Kernel>> patches_;
+  std::vector<Frame> frames_;
 };
 
 }  // namespace shape_prediction
