@@ -55,26 +55,45 @@ class Quartic_triangle_patch {
       const Vector_3 d0 = cross_boundary(i, 0), d3 = cross_boundary(i, 3);  // eq. 5.24-5.26
       interior_g(i, cubic[i], n_start[i], n_end[i], d0, d3, g_[i][0], g_[i][1]);
     }
+    for (int i = 0; i < 25; ++i) cd_[i] = to_array3(control_[i]);
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 2; ++j) gd_[i][j] = to_array3(g_[i][j]);
   }
 
   /// Eq. 5.17 with the interior control points of eq. 5.27-5.29; u + v + w = 1.
   Point_3 operator()(double u, double v, double w) const {
-    std::array<Point_3, 3> inner = interior(u, v, w);
-    double xyz[3] = {0, 0, 0};
+    double xyz[3];
+    evaluate(u, v, w, xyz);
+    return Point_3(xyz[0], xyz[1], xyz[2]);
+  }
+
+  /// `operator()` in doubles, from the control points converted once.
+  void evaluate(double u, double v, double w, double* xyz) const {
+    double pu[5], pv[5], pw[5];
+    pu[0] = pv[0] = pw[0] = 1;
+    for (int e = 1; e <= 4; ++e) {
+      pu[e] = pu[e - 1] * u;
+      pv[e] = pv[e - 1] * v;
+      pw[e] = pw[e - 1] * w;
+    }
+    double inner[3][3];
+    blend(u, gd_[2][1], v, gd_[0][0], inner[0]);
+    blend(w, gd_[0][1], u, gd_[1][0], inner[1]);
+    blend(v, gd_[1][1], w, gd_[2][0], inner[2]);
+    xyz[0] = xyz[1] = xyz[2] = 0;
     for (int i = 0; i <= 4; ++i) {
       for (int j = 0; i + j <= 4; ++j) {
         const int k = 4 - i - j;
-        const double b = multinomial(i, j, k) * power(u, i) * power(v, j) * power(w, k);
-        const Point_3& p = (i == 1 && j == 1)   ? inner[0]
-                           : (i == 1 && k == 1) ? inner[1]
-                           : (j == 1 && k == 1) ? inner[2]
-                                                : control_[index(i, j)];
-        xyz[0] += b * CGAL::to_double(p.x());
-        xyz[1] += b * CGAL::to_double(p.y());
-        xyz[2] += b * CGAL::to_double(p.z());
+        const double b = multinomial(i, j, k) * pu[i] * pv[j] * pw[k];
+        const double* p = (i == 1 && j == 1)   ? inner[0]
+                          : (i == 1 && k == 1) ? inner[1]
+                          : (j == 1 && k == 1) ? inner[2]
+                                               : cd_[index(i, j)].data();
+        xyz[0] += b * p[0];
+        xyz[1] += b * p[1];
+        xyz[2] += b * p[2];
       }
     }
-    return Point_3(xyz[0], xyz[1], xyz[2]);
   }
 
   const Point_3& boundary_control(int i, int j) const { return control_[index(i, j)]; }
@@ -151,18 +170,22 @@ class Quartic_triangle_patch {
          (2.0 / 3) * lambda1 * w1 + (1.0 / 3) * mu0 * a2 + (2.0 / 3) * mu1 * a1;
   }
 
-  // Eq. 5.27-5.29: returns {P_{1,1,2}, P_{1,2,1}, P_{2,1,1}} at (u, v, w).
-  std::array<Point_3, 3> interior(double u, double v, double w) const {
-    auto blend = [](double a, const Point_3& pa, double b, const Point_3& pb) {
-      if (a + b <= 0) return CGAL::midpoint(pa, pb);  // at the opposite corner: weight zero
-      return CGAL::ORIGIN + (a * (pa - CGAL::ORIGIN) + b * (pb - CGAL::ORIGIN)) / (a + b);
-    };
-    return {blend(u, g_[2][1], v, g_[0][0]), blend(w, g_[0][1], u, g_[1][0]),
-            blend(v, g_[1][1], w, g_[2][0])};
+  // Eq. 5.27-5.29 in doubles (at the opposite corner, where both weights vanish, the
+  // midpoint; its weight in eq. 5.17 is zero there).
+  static void blend(double a, const std::array<double, 3>& pa, double b,
+                    const std::array<double, 3>& pb, double* out) {
+    for (int c = 0; c < 3; ++c)
+      out[c] = a + b <= 0 ? (pa[c] + pb[c]) / 2 : (a * pa[c] + b * pb[c]) / (a + b);
+  }
+
+  static std::array<double, 3> to_array3(const Point_3& p) {
+    return {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
   }
 
   std::array<Point_3, 25> control_;
-  std::array<std::array<Point_3, 2>, 3> g_;  // G_{i,1}, G_{i,2}
+  std::array<std::array<Point_3, 2>, 3> g_;                 // G_{i,1}, G_{i,2}
+  std::array<std::array<double, 3>, 25> cd_;                // control_ in doubles
+  std::array<std::array<std::array<double, 3>, 2>, 3> gd_;  // g_ in doubles
 };
 
 /// The patches over every triangle of a triangulation, and the mapping of eq. 5.31.
@@ -192,9 +215,65 @@ class Bezier_patch_network {
   /// network, its barycentric coordinates there (clamped into the triangle when x' falls
   /// outside every triangle), and the patch point with those coordinates.
   Point_3 map(const Point_3& x) const {
-    const double p[3] = {CGAL::to_double(x.x()), CGAL::to_double(x.y()), CGAL::to_double(x.z())};
     std::size_t best = 0;
-    std::array<double, 3> best_bary{1.0 / 3, 1.0 / 3, 1.0 / 3};
+    std::array<double, 3> bary{1.0 / 3, 1.0 / 3, 1.0 / 3};
+    locate(x, best, bary);
+    return patches_[best](bary[0], bary[1], bary[2]);
+  }
+
+  /// The point of the patch network nearest to `x` (its foot point): from the patch and the
+  /// coordinates `map` finds, three Gauss-Newton steps on that patch's barycentric coordinates,
+  /// kept inside its triangle. A point already on the network stays where it is (`map` moves it
+  /// by the difference between the patch and its flat triangle's parametrisation), so a
+  /// smoothing that projects after each move does not drift along the patches.
+  Point_3 project(const Point_3& x) const {
+    std::size_t t = 0;
+    std::array<double, 3> bary{1.0 / 3, 1.0 / 3, 1.0 / 3};
+    locate(x, t, bary);
+    const Quartic_triangle_patch<Kernel>& patch = patches_[t];
+    const double target[3] = {CGAL::to_double(x.x()), CGAL::to_double(x.y()),
+                              CGAL::to_double(x.z())};
+    auto eval = [&patch](double v, double w, double* out) { patch.evaluate(1 - v - w, v, w, out); };
+    double v = bary[1], w = bary[2];
+    const double h = 1e-6;  // forward differences of a quartic
+    for (int iteration = 0; iteration < 3; ++iteration) {
+      double s[3], sv[3], sw[3], dv[3], dw[3], r[3];
+      eval(v, w, s);
+      // Step into the triangle: towards the smaller coordinate sum.
+      const double hv = v + w + h <= 1 ? h : -h, hw = hv;
+      eval(v + hv, w, sv);
+      eval(v, w + hw, sw);
+      for (int k = 0; k < 3; ++k) {
+        dv[k] = (sv[k] - s[k]) / hv;
+        dw[k] = (sw[k] - s[k]) / hw;
+        r[k] = s[k] - target[k];
+      }
+      const double a = dot3(dv, dv), b = dot3(dv, dw), c = dot3(dw, dw);
+      const double gv = dot3(dv, r), gw = dot3(dw, r);
+      const double det = a * c - b * b;
+      if (!(det > 0)) break;
+      v -= (c * gv - b * gw) / det;
+      w -= (a * gw - b * gv) / det;
+      v = std::max(v, 0.0);
+      w = std::max(w, 0.0);
+      if (v + w > 1) {
+        const double sum = v + w;
+        v /= sum;
+        w /= sum;
+      }
+    }
+    return patch(1 - v - w, v, w);
+  }
+
+ private:
+  static double dot3(const double* a, const double* b) {
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+  }
+
+  // Eq. 5.31: the triangle nearest to `x` and the barycentric coordinates of x's closest point
+  // on it (its normal projection when that falls inside).
+  void locate(const Point_3& x, std::size_t& best, std::array<double, 3>& best_bary) const {
+    const double p[3] = {CGAL::to_double(x.x()), CGAL::to_double(x.y()), CGAL::to_double(x.z())};
     double best_distance = std::numeric_limits<double>::infinity();
     for (std::size_t t = 0; t < frames_.size(); ++t) {
       const Frame& f = frames_[t];
@@ -211,10 +290,8 @@ class Bezier_patch_network {
         best_bary = bary;
       }
     }
-    return patches_[best](best_bary[0], best_bary[1], best_bary[2]);
   }
 
- private:
   // A triangle of the network in doubles: corner a, edges ab and ac, their Gram matrix, and a
   // bounding sphere.
   struct Frame {
