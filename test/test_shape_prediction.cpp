@@ -230,6 +230,12 @@ TEST(ShapePrediction, ProjectionOntoThePatchesKeepsTheirPointsWhereMapMovesThem)
       const Point on = network.patch(0)(u, v, 1 - u - v);
       const Point projected = network.project(on);
       EXPECT_LT(std::sqrt(CGAL::squared_distance(projected, on)), 1e-7);
+      // Warm-started on the right patch, or on a wrong one (then searched again): the same.
+      for (std::size_t start : {std::size_t(0), std::size_t(2)}) {
+        std::size_t hint = start;
+        EXPECT_LT(std::sqrt(CGAL::squared_distance(network.project(on, hint), on)), 1e-7);
+        EXPECT_EQ(hint, 0u);
+      }
       map_moves = std::max(map_moves, std::sqrt(CGAL::squared_distance(network.map(on), on)));
       // Off the patches: the foot point is at least as close as the point `map` gives.
       const Point off = on + 0.05 * (on - CGAL::ORIGIN);
@@ -261,7 +267,7 @@ TEST(ShapePrediction, GuidedFlowMovesTowardsTheCentroidWithoutWorseningTheSmalle
   };
   const double before = smallest_angle();
   sp::guided_curvature_flow(
-      front, [](const CGAL::Mesh_repair::internal::Vec3& p) { return p; }, 5);
+      front, [](const CGAL::Mesh_repair::internal::Vec3& p, std::size_t&) { return p; }, 5);
   EXPECT_GE(smallest_angle(), before);
   EXPECT_LT(std::hypot(front.points[4][0] - 0.5, front.points[4][1] - 0.5), 0.1);
 }

@@ -227,14 +227,37 @@ class Bezier_patch_network {
   /// by the difference between the patch and its flat triangle's parametrisation), so a
   /// smoothing that projects after each move does not drift along the patches.
   Point_3 project(const Point_3& x) const {
+    std::size_t hint = size();
+    return project(x, hint);
+  }
+
+  /// `project` warm-started on the patch `hint` (a previous result for a nearby point): when the
+  /// foot point on that patch lies strictly inside its triangle it is kept, otherwise the
+  /// nearest triangle is searched as in `project`; `hint` is set to the patch used.
+  Point_3 project(const Point_3& x, std::size_t& hint) const {
+    const double target[3] = {CGAL::to_double(x.x()), CGAL::to_double(x.y()),
+                              CGAL::to_double(x.z())};
+    double foot[3];
+    if (hint < size()) {
+      std::array<double, 3> bary{1.0 / 3, 1.0 / 3, 1.0 / 3};
+      projected_distance(frames_[hint], target, bary);
+      if (foot_point(hint, target, bary[1], bary[2], foot))
+        return Point_3(foot[0], foot[1], foot[2]);
+    }
     std::size_t t = 0;
     std::array<double, 3> bary{1.0 / 3, 1.0 / 3, 1.0 / 3};
     locate(x, t, bary);
+    foot_point(t, target, bary[1], bary[2], foot);
+    hint = t;
+    return Point_3(foot[0], foot[1], foot[2]);
+  }
+
+ private:
+  // Gauss-Newton steps towards the foot point of `target` on patch t from coordinates (v, w);
+  // true when it ends strictly inside the triangle.
+  bool foot_point(std::size_t t, const double* target, double v, double w, double* out) const {
     const Quartic_triangle_patch<Kernel>& patch = patches_[t];
-    const double target[3] = {CGAL::to_double(x.x()), CGAL::to_double(x.y()),
-                              CGAL::to_double(x.z())};
-    auto eval = [&patch](double v, double w, double* out) { patch.evaluate(1 - v - w, v, w, out); };
-    double v = bary[1], w = bary[2];
+    auto eval = [&patch](double a, double b, double* xyz) { patch.evaluate(1 - a - b, a, b, xyz); };
     const double h = 1e-6;  // forward differences of a quartic
     for (int iteration = 0; iteration < 3; ++iteration) {
       double s[3], sv[3], sw[3], dv[3], dw[3], r[3];
@@ -262,9 +285,11 @@ class Bezier_patch_network {
         w /= sum;
       }
     }
-    return patch(1 - v - w, v, w);
+    eval(v, w, out);
+    return v > 0 && w > 0 && v + w < 1;
   }
 
+ public:
  private:
   static double dot3(const double* a, const double* b) {
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];

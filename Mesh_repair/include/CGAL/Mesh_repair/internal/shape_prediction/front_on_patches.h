@@ -38,11 +38,12 @@ Vec3 as_vec3(const Point& p) {
 
 /// Thesis 5.6 step 8: umbrella (uniform mean-curvature) flow of the new nodes with the patches
 /// as guiding surface: each node moves half-way to its neighbours' centroid and is projected
-/// back onto the patches by `onto_patches`. A move is kept only when every triangle around the
-/// node keeps its orientation (its normal turns by less than 60 degrees), so the flow cannot
-/// fold the patch, and when the smallest angle of those triangles does not decrease (a "smart"
-/// Laplacian: the flow can only improve the worst triangle around each node, and the patch's
-/// smallest angle never decreases).
+/// back onto the patches by `onto_patches(point, hint)` (`hint`: the node's own slot, which the
+/// projection may use to start from where the node's previous projection ended). A move is kept
+/// only when every triangle around the node keeps its orientation (its normal turns by less than 60
+/// degrees), so the flow cannot fold the patch, and when the smallest angle of those triangles does
+/// not decrease (a "smart" Laplacian: the flow can only improve the worst triangle around each
+/// node, and the patch's smallest angle never decreases).
 template <class Project>
 void guided_curvature_flow(Front_triangulation& front, const Project& onto_patches,
                            int iterations) {
@@ -77,6 +78,8 @@ void guided_curvature_flow(Front_triangulation& front, const Project& onto_patch
     return worst;
   };
   std::vector<Vec3> before;
+  // Per node: the patch of its last projection, where the next one starts.
+  std::vector<std::size_t> hints(count - first, std::size_t(-1));
   for (int iteration = 0; iteration < iterations; ++iteration) {
     for (std::size_t p = first; p < count; ++p) {
       const auto& list = neighbours[p - first];
@@ -91,7 +94,7 @@ void guided_curvature_flow(Front_triangulation& front, const Project& onto_patch
         before.push_back(unit_normal(t));
         quality_before = std::min(quality_before, smallest_angle_measure(t));
       }
-      front.points[p] = onto_patches(scale(add(old, centroid), 0.5));
+      front.points[p] = onto_patches(scale(add(old, centroid), 0.5), hints[p - first]);
       double quality_after = 2;
       bool keep = true;
       for (std::size_t k = 0; k < before.size() && keep; ++k) {
@@ -137,7 +140,9 @@ Front_triangulation mesh_on_patches(const Shape_estimate<Kernel>& estimate,
     // drift a little at every pass.
     guided_curvature_flow(
         front,
-        [&network](const Vec3& p) { return as_vec3(network.project(Point_3(p[0], p[1], p[2]))); },
+        [&network](const Vec3& p, std::size_t& hint) {
+          return as_vec3(network.project(Point_3(p[0], p[1], p[2]), hint));
+        },
         flow_iterations);
   return front;
 }
