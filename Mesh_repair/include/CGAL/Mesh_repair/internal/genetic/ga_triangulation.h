@@ -322,30 +322,55 @@ class Triangle_cache {
   std::unordered_map<std::int64_t, Entry> cache_;
 };
 
-// Triangles of a complete set of n-3 non-crossing chords of an n-gon (outerplanar graph):
-// consecutive neighbours of each node, in polygon order, close a triangle.
-inline std::vector<Triangle> triangles_of(int n, const std::vector<Chord>& chords) {
-  std::vector<std::vector<int>> neighbours(n);
+/// Scratch buffers of `triangles_of`, reused across the calls of a GA run.
+struct Triangles_of_scratch {
+  std::vector<int> start, fill, neighbours;
+};
+
+inline void triangles_of(int n, const std::vector<Chord>& chords, Triangles_of_scratch& scratch,
+                         std::vector<Triangle>& triangles) {
+  // Adjacency of the outerplanar graph in one array: node v's neighbours are
+  // neighbours[start[v] .. start[v + 1]), its two polygon neighbours first.
+  std::vector<int>& start = scratch.start;
+  std::vector<int>& fill = scratch.fill;
+  std::vector<int>& neighbours = scratch.neighbours;
+  start.assign(std::size_t(n) + 1, 0);
+  for (int i = 0; i < n; ++i) start[i + 1] = 2;
+  for (const Chord& c : chords) {
+    ++start[c.first + 1];
+    ++start[c.second + 1];
+  }
+  for (int i = 0; i < n; ++i) start[i + 1] += start[i];
+  neighbours.resize(std::size_t(start[n]));
+  fill.assign(start.begin(), start.end() - 1);
   for (int i = 0; i < n; ++i) {
-    neighbours[i].push_back((i + 1) % n);
-    neighbours[i].push_back((i + n - 1) % n);
+    neighbours[fill[i]++] = (i + 1) % n;
+    neighbours[fill[i]++] = (i + n - 1) % n;
   }
   for (const Chord& c : chords) {
-    neighbours[c.first].push_back(c.second);
-    neighbours[c.second].push_back(c.first);
+    neighbours[fill[c.first]++] = c.second;
+    neighbours[fill[c.second]++] = c.first;
   }
-  std::vector<Triangle> triangles;
-  triangles.reserve(n - 2);
+  triangles.clear();
+  triangles.reserve(std::size_t(std::max(n - 2, 0)));
   for (int v = 0; v < n; ++v) {
-    auto& nb = neighbours[v];
-    std::sort(nb.begin(), nb.end(),
-              [v, n](int a, int b) { return (a - v + n) % n < (b - v + n) % n; });
-    for (std::size_t k = 0; k + 1 < nb.size(); ++k) {
-      Triangle t{v, nb[k], nb[k + 1]};
+    int* begin = neighbours.data() + start[v];
+    int* end = neighbours.data() + start[v + 1];
+    std::sort(begin, end, [v, n](int a, int b) { return (a - v + n) % n < (b - v + n) % n; });
+    for (int* k = begin; k + 1 < end; ++k) {
+      Triangle t{v, k[0], k[1]};
       std::sort(t.begin(), t.end());
       if (t[0] == v) triangles.push_back(t);
     }
   }
+}
+
+// Triangles of a complete set of n-3 non-crossing chords of an n-gon (outerplanar graph):
+// consecutive neighbours of each node, in polygon order, close a triangle.
+inline std::vector<Triangle> triangles_of(int n, const std::vector<Chord>& chords) {
+  Triangles_of_scratch scratch;
+  std::vector<Triangle> triangles;
+  triangles_of(n, chords, scratch, triangles);
   return triangles;
 }
 
@@ -362,6 +387,11 @@ inline bool interleave(const Chord& x, const Chord& y) {
 class Chord_set_builder {
  public:
   explicit Chord_set_builder(int n) : n_(n), partners_(n) {}
+  /// Empties the set (keeps the buffers).
+  void clear() {
+    for (auto& p : partners_) p.clear();
+    chords_.clear();
+  }
   bool try_add(const Chord& c) {
     const int a = c.first, b = c.second;
     for (int w : partners_[a])
@@ -490,7 +520,8 @@ class Ga_engine {
         n_(int(points.size())),
         cache_(points),
         random_(options.random_seed),
-        owner_(std::size_t(n_) * n_, -1) {
+        owner_(std::size_t(n_) * n_, -1),
+        builder_(n_) {
     outside_.resize(n_, {0, 0, 0});
     for (int i = 0; i < n_ && std::size_t(i) < outside_normals.size(); ++i)
       outside_[i] = {CGAL::to_double(outside_normals[i].x()),
@@ -584,7 +615,8 @@ class Ga_engine {
   // the set is completed from both parents; an incomplete child is discarded (thesis: unfit).
   Individual crossover(const Individual& a, const Individual& b) {
     const int length = int(table_.chords.size());
-    std::vector<int> cuts;
+    std::vector<int>& cuts = cuts_;
+    cuts.clear();
     for (int c = 0; c < options_.crossover_points; ++c) cuts.push_back(random_.get_int(0, length));
     std::sort(cuts.begin(), cuts.end());
     auto from_a = [&](const Chord& ch) {
@@ -592,19 +624,23 @@ class Ga_engine {
       const int segment = int(std::upper_bound(cuts.begin(), cuts.end(), bit) - cuts.begin());
       return segment % 2 == 0;
     };
-    std::vector<Chord> inherited, rest;
+    std::vector<Chord>& inherited = inherited_;
+    std::vector<Chord>& rest = rest_;
+    inherited.clear();
+    rest.clear();
     for (const Chord& ch : a.chords) (from_a(ch) ? inherited : rest).push_back(ch);
     for (const Chord& ch : b.chords) (!from_a(ch) ? inherited : rest).push_back(ch);
     shuffle(inherited);
     shuffle(rest);
-    Chord_set_builder builder(n_);
+    Chord_set_builder& builder = builder_;
+    builder.clear();
     for (const Chord& ch : inherited) builder.try_add(ch);
     for (const Chord& ch : rest) builder.try_add(ch);
     if (int(builder.chords().size()) != n_ - 3) return a;
     Individual child;
     child.chords = builder.chords();
     std::sort(child.chords.begin(), child.chords.end());
-    child.triangles = triangles_of(n_, child.chords);
+    triangles_of(n_, child.chords, triangles_scratch_, child.triangles);
     return child;
   }
 
@@ -696,6 +732,11 @@ class Ga_engine {
   std::vector<std::array<double, 3>> outside_;
   std::vector<int> owner_;
   std::vector<std::size_t> touched_;
+  // Buffers of `crossover`, reused across children.
+  detail::Chord_set_builder builder_;
+  detail::Triangles_of_scratch triangles_scratch_;
+  std::vector<Chord> inherited_, rest_;
+  std::vector<int> cuts_;
 };
 
 }  // namespace detail

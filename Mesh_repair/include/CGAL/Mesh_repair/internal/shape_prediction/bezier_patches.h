@@ -55,26 +55,45 @@ class Quartic_triangle_patch {
       const Vector_3 d0 = cross_boundary(i, 0), d3 = cross_boundary(i, 3);  // eq. 5.24-5.26
       interior_g(i, cubic[i], n_start[i], n_end[i], d0, d3, g_[i][0], g_[i][1]);
     }
+    for (int i = 0; i < 25; ++i) cd_[i] = to_array3(control_[i]);
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 2; ++j) gd_[i][j] = to_array3(g_[i][j]);
   }
 
   /// Eq. 5.17 with the interior control points of eq. 5.27-5.29; u + v + w = 1.
   Point_3 operator()(double u, double v, double w) const {
-    std::array<Point_3, 3> inner = interior(u, v, w);
-    double xyz[3] = {0, 0, 0};
+    double xyz[3];
+    evaluate(u, v, w, xyz);
+    return Point_3(xyz[0], xyz[1], xyz[2]);
+  }
+
+  /// `operator()` in doubles, from the control points converted once.
+  void evaluate(double u, double v, double w, double* xyz) const {
+    double pu[5], pv[5], pw[5];
+    pu[0] = pv[0] = pw[0] = 1;
+    for (int e = 1; e <= 4; ++e) {
+      pu[e] = pu[e - 1] * u;
+      pv[e] = pv[e - 1] * v;
+      pw[e] = pw[e - 1] * w;
+    }
+    double inner[3][3];
+    blend(u, gd_[2][1], v, gd_[0][0], inner[0]);
+    blend(w, gd_[0][1], u, gd_[1][0], inner[1]);
+    blend(v, gd_[1][1], w, gd_[2][0], inner[2]);
+    xyz[0] = xyz[1] = xyz[2] = 0;
     for (int i = 0; i <= 4; ++i) {
       for (int j = 0; i + j <= 4; ++j) {
         const int k = 4 - i - j;
-        const double b = multinomial(i, j, k) * power(u, i) * power(v, j) * power(w, k);
-        const Point_3& p = (i == 1 && j == 1)   ? inner[0]
-                           : (i == 1 && k == 1) ? inner[1]
-                           : (j == 1 && k == 1) ? inner[2]
-                                                : control_[index(i, j)];
-        xyz[0] += b * CGAL::to_double(p.x());
-        xyz[1] += b * CGAL::to_double(p.y());
-        xyz[2] += b * CGAL::to_double(p.z());
+        const double b = multinomial(i, j, k) * pu[i] * pv[j] * pw[k];
+        const double* p = (i == 1 && j == 1)   ? inner[0]
+                          : (i == 1 && k == 1) ? inner[1]
+                          : (j == 1 && k == 1) ? inner[2]
+                                               : cd_[index(i, j)].data();
+        xyz[0] += b * p[0];
+        xyz[1] += b * p[1];
+        xyz[2] += b * p[2];
       }
     }
-    return Point_3(xyz[0], xyz[1], xyz[2]);
   }
 
   const Point_3& boundary_control(int i, int j) const { return control_[index(i, j)]; }
@@ -151,18 +170,22 @@ class Quartic_triangle_patch {
          (2.0 / 3) * lambda1 * w1 + (1.0 / 3) * mu0 * a2 + (2.0 / 3) * mu1 * a1;
   }
 
-  // Eq. 5.27-5.29: returns {P_{1,1,2}, P_{1,2,1}, P_{2,1,1}} at (u, v, w).
-  std::array<Point_3, 3> interior(double u, double v, double w) const {
-    auto blend = [](double a, const Point_3& pa, double b, const Point_3& pb) {
-      if (a + b <= 0) return CGAL::midpoint(pa, pb);  // at the opposite corner: weight zero
-      return CGAL::ORIGIN + (a * (pa - CGAL::ORIGIN) + b * (pb - CGAL::ORIGIN)) / (a + b);
-    };
-    return {blend(u, g_[2][1], v, g_[0][0]), blend(w, g_[0][1], u, g_[1][0]),
-            blend(v, g_[1][1], w, g_[2][0])};
+  // Eq. 5.27-5.29 in doubles (at the opposite corner, where both weights vanish, the
+  // midpoint; its weight in eq. 5.17 is zero there).
+  static void blend(double a, const std::array<double, 3>& pa, double b,
+                    const std::array<double, 3>& pb, double* out) {
+    for (int c = 0; c < 3; ++c)
+      out[c] = a + b <= 0 ? (pa[c] + pb[c]) / 2 : (a * pa[c] + b * pb[c]) / (a + b);
+  }
+
+  static std::array<double, 3> to_array3(const Point_3& p) {
+    return {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
   }
 
   std::array<Point_3, 25> control_;
-  std::array<std::array<Point_3, 2>, 3> g_;  // G_{i,1}, G_{i,2}
+  std::array<std::array<Point_3, 2>, 3> g_;                 // G_{i,1}, G_{i,2}
+  std::array<std::array<double, 3>, 25> cd_;                // control_ in doubles
+  std::array<std::array<std::array<double, 3>, 2>, 3> gd_;  // g_ in doubles
 };
 
 /// The patches over every triangle of a triangulation, and the mapping of eq. 5.31.
@@ -176,9 +199,12 @@ class Bezier_patch_network {
                        const std::vector<std::array<int, 3>>& triangles)
       : points_(points), triangles_(triangles) {
     patches_.reserve(triangles.size());
-    for (const auto& t : triangles)
+    frames_.reserve(triangles.size());
+    for (const auto& t : triangles) {
       patches_.emplace_back(std::array<Point_3, 3>{points[t[0]], points[t[1]], points[t[2]]},
                             std::array<Vector_3, 3>{normals[t[0]], normals[t[1]], normals[t[2]]});
+      frames_.push_back(make_frame(points[t[0]], points[t[1]], points[t[2]]));
+    }
   }
 
   std::size_t size() const { return patches_.size(); }
@@ -190,35 +216,146 @@ class Bezier_patch_network {
   /// outside every triangle), and the patch point with those coordinates.
   Point_3 map(const Point_3& x) const {
     std::size_t best = 0;
-    std::array<double, 3> best_bary{1.0 / 3, 1.0 / 3, 1.0 / 3};
-    double best_distance = std::numeric_limits<double>::infinity();
-    for (std::size_t t = 0; t < triangles_.size(); ++t) {
+    std::array<double, 3> bary{1.0 / 3, 1.0 / 3, 1.0 / 3};
+    locate(x, best, bary);
+    return patches_[best](bary[0], bary[1], bary[2]);
+  }
+
+  /// The point of the patch network nearest to `x` (its foot point): from the patch and the
+  /// coordinates `map` finds, three Gauss-Newton steps on that patch's barycentric coordinates,
+  /// kept inside its triangle. A point already on the network stays where it is (`map` moves it
+  /// by the difference between the patch and its flat triangle's parametrisation), so a
+  /// smoothing that projects after each move does not drift along the patches.
+  Point_3 project(const Point_3& x) const {
+    std::size_t hint = size();
+    return project(x, hint);
+  }
+
+  /// `project` warm-started on the patch `hint` (a previous result for a nearby point): when the
+  /// foot point on that patch lies strictly inside its triangle it is kept, otherwise the
+  /// nearest triangle is searched as in `project`; `hint` is set to the patch used.
+  Point_3 project(const Point_3& x, std::size_t& hint) const {
+    const double target[3] = {CGAL::to_double(x.x()), CGAL::to_double(x.y()),
+                              CGAL::to_double(x.z())};
+    double foot[3];
+    if (hint < size()) {
       std::array<double, 3> bary{1.0 / 3, 1.0 / 3, 1.0 / 3};
-      const double d = projected_distance(t, x, bary);
+      projected_distance(frames_[hint], target, bary);
+      if (foot_point(hint, target, bary[1], bary[2], foot))
+        return Point_3(foot[0], foot[1], foot[2]);
+    }
+    std::size_t t = 0;
+    std::array<double, 3> bary{1.0 / 3, 1.0 / 3, 1.0 / 3};
+    locate(x, t, bary);
+    foot_point(t, target, bary[1], bary[2], foot);
+    hint = t;
+    return Point_3(foot[0], foot[1], foot[2]);
+  }
+
+ private:
+  // Gauss-Newton steps towards the foot point of `target` on patch t from coordinates (v, w);
+  // true when it ends strictly inside the triangle.
+  bool foot_point(std::size_t t, const double* target, double v, double w, double* out) const {
+    const Quartic_triangle_patch<Kernel>& patch = patches_[t];
+    auto eval = [&patch](double a, double b, double* xyz) { patch.evaluate(1 - a - b, a, b, xyz); };
+    const double h = 1e-6;  // forward differences of a quartic
+    for (int iteration = 0; iteration < 3; ++iteration) {
+      double s[3], sv[3], sw[3], dv[3], dw[3], r[3];
+      eval(v, w, s);
+      // Step into the triangle: towards the smaller coordinate sum.
+      const double hv = v + w + h <= 1 ? h : -h, hw = hv;
+      eval(v + hv, w, sv);
+      eval(v, w + hw, sw);
+      for (int k = 0; k < 3; ++k) {
+        dv[k] = (sv[k] - s[k]) / hv;
+        dw[k] = (sw[k] - s[k]) / hw;
+        r[k] = s[k] - target[k];
+      }
+      const double a = dot3(dv, dv), b = dot3(dv, dw), c = dot3(dw, dw);
+      const double gv = dot3(dv, r), gw = dot3(dw, r);
+      const double det = a * c - b * b;
+      if (!(det > 0)) break;
+      v -= (c * gv - b * gw) / det;
+      w -= (a * gw - b * gv) / det;
+      v = std::max(v, 0.0);
+      w = std::max(w, 0.0);
+      if (v + w > 1) {
+        const double sum = v + w;
+        v /= sum;
+        w /= sum;
+      }
+    }
+    eval(v, w, out);
+    return v > 0 && w > 0 && v + w < 1;
+  }
+
+ public:
+ private:
+  static double dot3(const double* a, const double* b) {
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+  }
+
+  // Eq. 5.31: the triangle nearest to `x` and the barycentric coordinates of x's closest point
+  // on it (its normal projection when that falls inside).
+  void locate(const Point_3& x, std::size_t& best, std::array<double, 3>& best_bary) const {
+    const double p[3] = {CGAL::to_double(x.x()), CGAL::to_double(x.y()), CGAL::to_double(x.z())};
+    double best_distance = std::numeric_limits<double>::infinity();
+    for (std::size_t t = 0; t < frames_.size(); ++t) {
+      const Frame& f = frames_[t];
+      // The closest point lies in the triangle, within `radius` of its centroid: skip the
+      // triangles that cannot be nearer than the best so far.
+      const double to_centre = std::sqrt(squared(p[0] - f.centre[0]) + squared(p[1] - f.centre[1]) +
+                                         squared(p[2] - f.centre[2]));
+      if (to_centre > f.radius && squared(to_centre - f.radius) > best_distance) continue;
+      std::array<double, 3> bary{1.0 / 3, 1.0 / 3, 1.0 / 3};
+      const double d = projected_distance(f, p, bary);
       if (d < best_distance) {
         best_distance = d;
         best = t;
         best_bary = bary;
       }
     }
-    return patches_[best](best_bary[0], best_bary[1], best_bary[2]);
   }
 
- private:
+  // A triangle of the network in doubles: corner a, edges ab and ac, their Gram matrix, and a
+  // bounding sphere.
+  struct Frame {
+    double a[3], ab[3], ac[3], d00, d01, d11, det, centre[3], radius;
+  };
+  static double squared(double x) { return x * x; }
+
+  static Frame make_frame(const Point_3& pa, const Point_3& pb, const Point_3& pc) {
+    Frame f;
+    const double a[3] = {CGAL::to_double(pa.x()), CGAL::to_double(pa.y()), CGAL::to_double(pa.z())};
+    const double b[3] = {CGAL::to_double(pb.x()), CGAL::to_double(pb.y()), CGAL::to_double(pb.z())};
+    const double c[3] = {CGAL::to_double(pc.x()), CGAL::to_double(pc.y()), CGAL::to_double(pc.z())};
+    for (int k = 0; k < 3; ++k) {
+      f.a[k] = a[k];
+      f.ab[k] = b[k] - a[k];
+      f.ac[k] = c[k] - a[k];
+      f.centre[k] = (a[k] + b[k] + c[k]) / 3;
+    }
+    f.d00 = f.ab[0] * f.ab[0] + f.ab[1] * f.ab[1] + f.ab[2] * f.ab[2];
+    f.d01 = f.ab[0] * f.ac[0] + f.ab[1] * f.ac[1] + f.ab[2] * f.ac[2];
+    f.d11 = f.ac[0] * f.ac[0] + f.ac[1] * f.ac[1] + f.ac[2] * f.ac[2];
+    f.det = f.d00 * f.d11 - f.d01 * f.d01;
+    f.radius = 0;
+    for (const double* q : {a, b, c})
+      f.radius =
+          std::max(f.radius, std::sqrt(squared(q[0] - f.centre[0]) + squared(q[1] - f.centre[1]) +
+                                       squared(q[2] - f.centre[2])));
+    return f;
+  }
+
   // Squared distance from x to its closest point on triangle t, with that point's barycentric
   // coordinates (the normal projection when it falls inside, eq. 5.31).
-  double projected_distance(std::size_t t, const Point_3& x, std::array<double, 3>& bary) const {
-    const Point_3& a = points_[triangles_[t][0]];
-    const Point_3& b = points_[triangles_[t][1]];
-    const Point_3& c = points_[triangles_[t][2]];
-    const Vector_3 ab = b - a, ac = c - a, ax = x - a;
-    const double d00 = CGAL::to_double(ab * ab), d01 = CGAL::to_double(ab * ac),
-                 d11 = CGAL::to_double(ac * ac);
-    const double d20 = CGAL::to_double(ax * ab), d21 = CGAL::to_double(ax * ac);
-    const double det = d00 * d11 - d01 * d01;
-    if (!(det > 0)) return std::numeric_limits<double>::infinity();
-    double v = (d11 * d20 - d01 * d21) / det;
-    double w = (d00 * d21 - d01 * d20) / det;
+  static double projected_distance(const Frame& f, const double* x, std::array<double, 3>& bary) {
+    if (!(f.det > 0)) return std::numeric_limits<double>::infinity();
+    const double ax[3] = {x[0] - f.a[0], x[1] - f.a[1], x[2] - f.a[2]};
+    const double d20 = ax[0] * f.ab[0] + ax[1] * f.ab[1] + ax[2] * f.ab[2];
+    const double d21 = ax[0] * f.ac[0] + ax[1] * f.ac[1] + ax[2] * f.ac[2];
+    double v = (f.d11 * d20 - f.d01 * d21) / f.det;
+    double w = (f.d00 * d21 - f.d01 * d20) / f.det;
     double u = 1 - v - w;
     if (u < 0 || v < 0 || w < 0) {
       u = std::max(u, 0.0);
@@ -230,14 +367,15 @@ class Bezier_patch_network {
       w /= s;
     }
     bary = {u, v, w};
-    const Point_3 p =
-        CGAL::ORIGIN + u * (a - CGAL::ORIGIN) + v * (b - CGAL::ORIGIN) + w * (c - CGAL::ORIGIN);
-    return CGAL::to_double(CGAL::squared_distance(x, p));
+    double d = 0;
+    for (int k = 0; k < 3; ++k) d += squared(ax[k] - v * f.ab[k] - w * f.ac[k]);
+    return d;
   }
 
   std::vector<Point_3> points_;
   std::vector<std::array<int, 3>> triangles_;
   std::vector<Quartic_triangle_patch<Kernel>> patches_;
+  std::vector<Frame> frames_;
 };
 
 }  // namespace shape_prediction

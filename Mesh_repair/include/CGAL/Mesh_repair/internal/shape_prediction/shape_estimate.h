@@ -26,9 +26,11 @@ namespace shape_prediction {
 template <class Kernel>
 struct Hole_polygon {
   std::vector<typename Kernel::Point_3> points;
-  std::vector<typename Kernel::Vector_3> normals;  ///< eq. 5.30 at each node (unit)
-  std::vector<typename Kernel::Vector_3> outside;  ///< unit normal of the face across edge
-                                                   ///< (i, i+1); null vector when none
+  std::vector<typename Kernel::Vector_3> normals;       ///< at each node (unit), for the patches
+  std::vector<typename Kernel::Vector_3> face_normals;  ///< eq. 5.30 at each node (unit), for
+                                                        ///< the chord validity of the GA
+  std::vector<typename Kernel::Vector_3> outside;       ///< unit normal of the face across edge
+                                                        ///< (i, i+1); null vector when none
 };
 
 struct Shape_estimate_options {
@@ -249,7 +251,8 @@ Shape_estimate<Kernel> estimate_shape(const Hole_polygon<Kernel>& hole,
     const int m = int(essential.size());
     for (int k = 0; k < m; ++k) {
       points.push_back(smoothed[essential[k]]);
-      normals.push_back(hole.normals[essential[k]]);
+      normals.push_back(hole.face_normals.empty() ? hole.normals[essential[k]]
+                                                  : hole.face_normals[essential[k]]);
       // The existing faces across a run of removed edges: their mean normal.
       Vector_3 sum(0, 0, 0);
       for (int i = essential[k]; i != essential[(k + 1) % m]; i = (i + 1) % n)
