@@ -3,9 +3,11 @@
 // The genetic-algorithm triangulation of closed 3D polygons (thesis 5.4, 7.x).
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Mesh_repair/internal/genetic/ga_triangulation.h>
+#include <CGAL/Random.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <set>
@@ -83,6 +85,33 @@ TEST(GaTriangulation, CrossingChordsAreRejected) {
   EXPECT_FALSE(builder.try_add({4, 7}));  // no duplicate
   EXPECT_FALSE(builder.try_add({2, 6}));
   EXPECT_TRUE(builder.try_add({1, 7}));  // shares end nodes only
+}
+
+/// The builder's range queries accept exactly the chords that cross no accepted chord and are
+/// not accepted already (brute force with `interleave`), on random sequences, across clears;
+/// and a full set is a triangulation (n - 3 chords).
+TEST(GaTriangulation, ChordSetBuilderAgreesWithTheBruteForceCrossingTest) {
+  CGAL::Random random(11);
+  for (int n : {4, 5, 9, 31, 64, 100}) {
+    ga::detail::Chord_set_builder builder(n);
+    for (int round = 0; round < 20; ++round) {
+      builder.clear();
+      std::vector<ga::Chord> accepted;
+      for (int attempt = 0; attempt < 6 * n; ++attempt) {
+        int a = random.get_int(0, n), b = random.get_int(0, n);
+        if (a > b) std::swap(a, b);
+        if (b - a < 2 || (a == 0 && b == n - 1)) continue;  // polygon edges are not chords
+        bool expected =
+            std::find(accepted.begin(), accepted.end(), ga::Chord(a, b)) == accepted.end();
+        for (const ga::Chord& c : accepted)
+          expected = expected && !ga::detail::interleave(c, ga::Chord(a, b));
+        ASSERT_EQ(builder.try_add({a, b}), expected) << n << ": " << a << "-" << b;
+        if (expected) accepted.emplace_back(a, b);
+      }
+      EXPECT_LE(int(accepted.size()), n - 3);
+      EXPECT_EQ(builder.full(), int(accepted.size()) == n - 3);
+    }
+  }
 }
 
 TEST(GaTriangulation, ResultIsAValidTriangulationNeverWorseThanItsSeed) {
