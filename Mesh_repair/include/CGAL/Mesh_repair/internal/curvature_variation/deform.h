@@ -13,7 +13,7 @@
 #include <CGAL/Mesh_repair/internal/curvature_variation/constraints.h>
 #include <CGAL/Mesh_repair/internal/curvature_variation/force_density_system.h>
 #include <CGAL/Mesh_repair/internal/curvature_variation/measures.h>
-#include <CGAL/Mesh_repair/internal/curvature_variation/nested_dissection.h>
+#include <CGAL/Mesh_repair/internal/curvature_variation/multifrontal_cholesky.h>
 
 #include <Eigen/QR>
 
@@ -115,7 +115,7 @@ Eigen::MatrixXd apply_constraints(const Solver& solver, Eigen::Index free_count,
 /// x by less than 1e-13 of its size.
 class Preconditioned_solver {
  public:
-  Preconditioned_solver(const Eigen::SparseMatrix<double>& H, const Ordered_ldlt& factor)
+  Preconditioned_solver(const Eigen::SparseMatrix<double>& H, const Multifrontal_cholesky& factor)
       : H_(H), factor_(factor) {}
 
   Eigen::MatrixXd solve(const Eigen::MatrixXd& B) const {
@@ -160,7 +160,7 @@ class Preconditioned_solver {
 
  private:
   const Eigen::SparseMatrix<double>& H_;
-  const Ordered_ldlt& factor_;
+  const Multifrontal_cholesky& factor_;
   mutable bool converged_ = true;
   mutable std::size_t iterations_ = 0;
 };
@@ -288,7 +288,7 @@ Curvature_deformation_report deform_patches(PolygonMesh& pm, VertexPointMap vpm,
   std::vector<std::array<double, 3>> positions;
   positions.reserve(system.free_count());
   for (auto v : system.free_vertices()) positions.push_back(system.position(v));
-  const Ordered_ldlt factor(H, positions);
+  const Multifrontal_cholesky factor(H, positions);
   report.factorizations = 1;
   report.factor_nonzeros = factor.factor_nonzeros();
   report.factorization_seconds = seconds_since(start);
@@ -327,14 +327,14 @@ Curvature_deformation_report deform_patches(PolygonMesh& pm, VertexPointMap vpm,
     std::size_t terms = 0;
     assemble_normal_system(remeasured, H2, B2, terms);
     report.assembly_seconds += seconds_since(assembly_start);
-    std::unique_ptr<Ordered_ldlt> refactorised;
+    std::unique_ptr<Multifrontal_cholesky> refactorised;
     Preconditioned_solver iterative(H2, factor);
     X = iterative.solve(B2, X);
     report.weight_remeasurements = 1;
     report.preconditioned_iterations = iterative.iterations();
     if (!iterative.converged()) {
       const auto factor_start = std::chrono::steady_clock::now();
-      refactorised = std::make_unique<Ordered_ldlt>(H2, positions);
+      refactorised = std::make_unique<Multifrontal_cholesky>(H2, positions);
       ++report.factorizations;
       report.factorization_seconds += seconds_since(factor_start);
       if (refactorised->info() == Eigen::Success) X = refactorised->solve(B2);

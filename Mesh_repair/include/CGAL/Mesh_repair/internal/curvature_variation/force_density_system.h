@@ -12,7 +12,8 @@
 // the two are related by the affine bijection F = D_f x_f + D_bf x_b (eq. 3, D_f is
 // non-singular as soon as every patch touches a blocked node), so the minimisers are the same,
 // but in positions the normal matrix H = M^T M stays sparse (a 3-ring stencil), while in forces
-// the contour terms need D_f^-1 (eq. 6), which is dense. One SimplicialLDLT factorisation of H
+// the contour terms need D_f^-1 (eq. 6), which is dense. One sparse Cholesky factorisation of H
+// (multifrontal_cholesky.h)
 // serves the three coordinates, every hole of the mesh, and the constraint multipliers.
 
 #include <CGAL/Mesh_repair/hole_filling/curvature_variation_options.h>

@@ -3,8 +3,8 @@
 #ifndef CGAL_MESH_REPAIR_INTERNAL_CURVATURE_VARIATION_NESTED_DISSECTION_H
 #define CGAL_MESH_REPAIR_INTERNAL_CURVATURE_VARIATION_NESTED_DISSECTION_H
 
-// A fill-reducing ordering for the normal matrix H of the force-density system, and the sparse
-// LDL^T factorisation that uses it.
+// A fill-reducing ordering for the normal matrix H of the force-density system, with the
+// separator tree that multifrontal_cholesky.h factorises along.
 //
 // H has a 3-ring stencil on a surface mesh (about 37 non-zeros per row). Eigen's default
 // minimum-degree ordering (AMD) is good for small systems but, on a large surface patch, its
@@ -17,7 +17,6 @@
 // natural order. The geometry only affects the quality of the ordering, never its validity.
 
 #include <Eigen/Sparse>
-#include <Eigen/SparseCholesky>
 
 #include <algorithm>
 #include <array>
@@ -29,32 +28,53 @@ namespace Mesh_repair {
 namespace internal {
 namespace curvature_variation {
 
-/// Elimination order (new position -> old index) of the symmetric pattern `H` by geometric
-/// nested dissection on `positions` (one row per unknown).
-inline std::vector<int> nested_dissection_order(const Eigen::SparseMatrix<double>& H,
-                                                const std::vector<std::array<double, 3>>& positions,
-                                                std::size_t leaf_size = 48) {
+/// A nested-dissection elimination order with its separator tree. Each tree node owns a
+/// contiguous range [begin, end) of the order: a leaf its vertices, an inner node its separator,
+/// emitted after both of its subtrees (so `nodes` is in post-order, children before parents).
+struct Nested_dissection {
+  struct Node {
+    int begin = 0, end = 0;  // range of the order that this node eliminates
+    int children = 0;        // 0 (leaf) or the number of non-empty halves
+    int parent = -1;
+  };
+  std::vector<int> order;  // new position -> old index
+  std::vector<Node> nodes;
+};
+
+/// Elimination order and separator tree of the symmetric pattern `H` by geometric nested
+/// dissection on `positions` (one row per unknown).
+inline Nested_dissection nested_dissection(const Eigen::SparseMatrix<double>& H,
+                                           const std::vector<std::array<double, 3>>& positions,
+                                           std::size_t leaf_size = 48) {
   const int n = int(H.cols());
-  std::vector<int> order;
+  Nested_dissection result;
+  std::vector<int>& order = result.order;
   order.reserve(std::size_t(n));
+  std::vector<Nested_dissection::Node> tree;  // indexed by task; renumbered in post-order below
+  std::vector<int> post_order;
   std::vector<int> label(std::size_t(n), -1);  // which half of the current split a vertex is in
   int next_label = 0;
 
   struct Task {
     std::vector<int> vertices;
     bool emit_only;  // a separator waiting for its turn
+    int node;
   };
   // Depth-first with an explicit stack: push the separator first so that it pops last.
   std::vector<Task> stack;
   std::vector<int> everything(static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i) everything[std::size_t(i)] = i;
-  stack.push_back({std::move(everything), false});
+  tree.emplace_back();
+  stack.push_back({std::move(everything), false, 0});
   while (!stack.empty()) {
     Task task = std::move(stack.back());
     stack.pop_back();
     std::vector<int>& set = task.vertices;
     if (task.emit_only || set.size() <= leaf_size) {
+      tree[std::size_t(task.node)].begin = int(order.size());
       order.insert(order.end(), set.begin(), set.end());
+      tree[std::size_t(task.node)].end = int(order.size());
+      post_order.push_back(task.node);
       continue;
     }
     std::array<double, 3> low = positions[std::size_t(set[0])], high = low;
@@ -99,55 +119,35 @@ inline std::vector<int> nested_dissection_order(const Eigen::SparseMatrix<double
       else if (l == second)
         sides[1].push_back(v);
     }
-    stack.push_back({std::move(border[std::size_t(cut)]), true});
+    stack.push_back({std::move(border[std::size_t(cut)]), true, task.node});
     for (auto& side : sides)
-      if (!side.empty()) stack.push_back({std::move(side), false});
+      if (!side.empty()) {
+        tree.emplace_back();
+        tree.back().parent = task.node;
+        ++tree[std::size_t(task.node)].children;
+        stack.push_back({std::move(side), false, int(tree.size()) - 1});
+      }
   }
-  return order;
+  // Renumber the nodes in post-order (the order they were emitted in).
+  std::vector<int> renumbered(tree.size());
+  for (std::size_t k = 0; k < post_order.size(); ++k)
+    renumbered[std::size_t(post_order[k])] = int(k);
+  result.nodes.resize(tree.size());
+  for (std::size_t t = 0; t < tree.size(); ++t) {
+    Nested_dissection::Node node = tree[t];
+    if (node.parent >= 0) node.parent = renumbered[std::size_t(node.parent)];
+    result.nodes[std::size_t(renumbered[t])] = node;
+  }
+  return result;
 }
 
-/// LDL^T of a symmetric positive definite H in a nested-dissection order, solved in the
-/// original numbering (what `Eigen::SimplicialLDLT` offers, with our ordering).
-class Ordered_ldlt {
- public:
-  Ordered_ldlt(const Eigen::SparseMatrix<double>& H,
-               const std::vector<std::array<double, 3>>& positions) {
-    const std::vector<int> order = nested_dissection_order(H, positions);
-    new_index_.assign(order.size(), 0);
-    for (std::size_t k = 0; k < order.size(); ++k) new_index_[std::size_t(order[k])] = int(k);
-    std::vector<Eigen::Triplet<double>> lower;
-    lower.reserve(std::size_t(H.nonZeros() / 2 + H.cols()));
-    for (int column = 0; column < int(H.outerSize()); ++column)
-      for (Eigen::SparseMatrix<double>::InnerIterator it(H, column); it; ++it) {
-        const int i = new_index_[std::size_t(it.index())], j = new_index_[std::size_t(column)];
-        if (i >= j) lower.emplace_back(i, j, it.value());
-      }
-    Eigen::SparseMatrix<double> permuted(H.rows(), H.cols());
-    permuted.setFromTriplets(lower.begin(), lower.end());
-    solver_.compute(permuted);
-  }
-
-  Eigen::ComputationInfo info() const { return solver_.info(); }
-
-  Eigen::MatrixXd solve(const Eigen::MatrixXd& B) const {
-    Eigen::MatrixXd permuted(B.rows(), B.cols());
-    for (Eigen::Index i = 0; i < B.rows(); ++i) permuted.row(new_index_[std::size_t(i)]) = B.row(i);
-    const Eigen::MatrixXd Y = solver_.solve(permuted);
-    Eigen::MatrixXd X(B.rows(), B.cols());
-    for (Eigen::Index i = 0; i < B.rows(); ++i) X.row(i) = Y.row(new_index_[std::size_t(i)]);
-    return X;
-  }
-
-  /// Non-zeros of the factor L (a measure of the ordering's quality).
-  std::size_t factor_nonzeros() const {
-    return std::size_t(solver_.matrixL().nestedExpression().nonZeros());
-  }
-
- private:
-  std::vector<int> new_index_;
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>>
-      solver_;
-};
+/// Elimination order (new position -> old index) of the symmetric pattern `H` by geometric
+/// nested dissection on `positions` (one row per unknown).
+inline std::vector<int> nested_dissection_order(const Eigen::SparseMatrix<double>& H,
+                                                const std::vector<std::array<double, 3>>& positions,
+                                                std::size_t leaf_size = 48) {
+  return nested_dissection(H, positions, leaf_size).order;
+}
 
 }  // namespace curvature_variation
 }  // namespace internal
