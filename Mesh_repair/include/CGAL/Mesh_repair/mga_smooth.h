@@ -4,7 +4,7 @@
 #define CGAL_MESH_REPAIR_MGA_SMOOTH_H
 
 /// \file mga_smooth.h
-/// Micro-genetic node smoothing of triangle and quad surface meshes on a smooth cubic surface
+/// Micro-genetic node smoothing of triangle and quad surface meshes on a smooth (G1) surface
 /// rebuilt from the mesh itself (Chen, Hsu, Lin, sections 2.2 and 3), and the paper's
 /// gradient-based baseline. See doc/mga_smooth.md.
 
@@ -57,7 +57,7 @@ inline std::pair<double, double> worst_and_mean_quality(const Polygon_arrays& me
   return count ? std::make_pair(worst, sum / double(count)) : std::make_pair(0.0, 0.0);
 }
 
-// Splits faces into the primary triangles of the cubic surface: quads along their shorter
+// Splits faces into the primary triangles of the G1 surface: quads along their shorter
 // diagonal, larger faces as fans.
 inline std::vector<std::array<int, 3>> primary_triangles(const Polygon_arrays& mesh,
                                                          const std::vector<std::vector<int>>& big) {
@@ -113,11 +113,14 @@ Mga_smooth_result smooth_with(PolygonMesh& pm, const NamedParameters& np,
       int(choose_parameter(get_parameter(np, internal_np::max_generations_t()), 3));
   const double feature_angle_deg =
       choose_parameter(get_parameter(np, internal_np::feature_angle_deg_t()), 120.0);
-  const double cubic_surface_weight =
-      choose_parameter(get_parameter(np, internal_np::cubic_surface_weight_t()), 0.5);
+  // `cubic_surface_weight` is the deprecated name of the same number (it blended a C0 cubic
+  // surface with the flat triangles; the G1 surface shortens its tangents instead).
+  const double tangent_scale = choose_parameter(
+      get_parameter(np, internal_np::surface_tangent_scale_t()),
+      choose_parameter(get_parameter(np, internal_np::cubic_surface_weight_t()), 0.5));
 
   // Index arrays of the mesh.
-  visitor.start_step("cubic surface");
+  visitor.start_step("G1 surface");
   auto index = CGAL::get_initialized_vertex_index_map(pm);
   std::vector<vertex_descriptor> vertex_of(num_vertices(pm));
   Polygon_arrays mesh;
@@ -146,8 +149,8 @@ Mga_smooth_result smooth_with(PolygonMesh& pm, const NamedParameters& np,
     }
   }
   mesh.build_incidence();
-  const Cubic_surface surface(mesh.points, primary_triangles(mesh, big_faces), feature_angle_deg,
-                              std::min(1.0, std::max(0.0, cubic_surface_weight)));
+  const G1_surface surface(mesh.points, primary_triangles(mesh, big_faces), feature_angle_deg,
+                           std::min(1.0, std::max(0.0, tangent_scale)));
   for (std::size_t v = 0; v < mesh.points.size(); ++v) {
     if (mesh.incidence_start[v] == mesh.incidence_start[v + 1]) {
       fixed[v] = true;  // isolated vertex: nothing to smooth
@@ -161,7 +164,7 @@ Mga_smooth_result smooth_with(PolygonMesh& pm, const NamedParameters& np,
       ++result.free_nodes;
     }
   }
-  visitor.end_step("cubic surface");
+  visitor.end_step("G1 surface");
 
   std::tie(result.worst_quality_before, result.mean_quality_before) = worst_and_mean_quality(mesh);
   visitor.start_step(optimizer == Node_optimizer::micro_ga ? "micro-GA smoothing"
@@ -190,8 +193,10 @@ Mga_smooth_result smooth_with(PolygonMesh& pm, const NamedParameters& np,
 /// algorithm of Chen, Hsu, Lin (section 3): for each free node and each adjacent element, a
 /// micro-GA over the design variables (r1, r2) of eq. 1-3 maximises the sum of alpha (eq. 4-5,
 /// triangles) and beta (eq. 7-8, quads) of the node's elements, each trial position being mapped
-/// onto a cubic surface rebuilt from the input mesh (section 2.2) or, by default, half-way between
-/// that surface and the input triangles (`cubic_surface_weight`, doc/mga_smooth.md); the best
+/// onto a tangent-plane continuous (G1) surface of quartic Bezier patches rebuilt from the input
+/// mesh and its estimated vertex normals (section 2.2), by default with its boundary curves'
+/// tangents halved so that it bulges half as far off the input triangles
+/// (`surface_tangent_scale`, doc/mga_smooth.md); the best
 /// position over the elements is taken if it raises the fitness and folds no element (exact
 /// orientation test).
 /// Trial positions that would lower the node's worst element below min(its current quality, 0.5)
@@ -218,11 +223,15 @@ Mga_smooth_result smooth_with(PolygonMesh& pm, const NamedParameters& np,
 ///   \cgalParamNBegin{feature_angle_deg} \cgalParamDescription{an edge whose dihedral angle is
 ///     below this is a feature edge; its nodes are fixed} \cgalParamType{double}
 ///     \cgalParamDefault{120} \cgalParamNEnd
-///   \cgalParamNBegin{cubic_surface_weight} \cgalParamDescription{where trial positions are
-///     mapped: flat + w (cubic - flat) at the same barycentric coordinates of a primary triangle;
-///     0 = the input triangles, 1 = the cubic surface (the paper's mapping, closest to the smooth
-///     surface the input samples), 0.5 = half-way, within half the input's chordal deviation of
-///     both} \cgalParamType{double in [0, 1]} \cgalParamDefault{0.5} \cgalParamNEnd
+///   \cgalParamNBegin{surface_tangent_scale} \cgalParamDescription{where trial positions are
+///     mapped: the G1 surface whose boundary curves have their end tangents scaled by s (same
+///     directions, so still G1 with the same vertex normals); it lies about s times as far off
+///     the input triangles as the full surface. 0 = the input triangles, 1 = the full Walton-Meek
+///     surface (the paper's mapping onto the smooth surface, closest to the surface the input
+///     samples), 0.5 = within about half the input's chordal deviation of both}
+///     \cgalParamType{double in [0, 1]} \cgalParamDefault{0.5}
+///     \cgalParamExtra{`cubic_surface_weight` is its deprecated name (read when
+///     `surface_tangent_scale` is absent).} \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_is_constrained_map} \cgalParamDescription{nodes that must not move}
 ///     \cgalParamType{readable vertex property map to bool} \cgalParamDefault{none} \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_threads} \cgalParamDescription{threads (TBB) over independent

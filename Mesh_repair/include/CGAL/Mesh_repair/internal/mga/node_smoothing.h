@@ -5,7 +5,7 @@
 
 // The sweeps of Chen et al. 3.1 (steps 2-9): every free node in turn searches each adjacent
 // element with the micro-GA (or, as the paper's baseline, a conjugate-gradient search in its
-// tangent plane), maps the trial positions onto the cubic surface and moves to the best one when
+// tangent plane), maps the trial positions onto the G1 surface and moves to the best one when
 // it raises the fitness by at least `min_gain` and folds no element (exact orientation test).
 // Sweeps repeat until no node moves.
 //
@@ -13,7 +13,7 @@
 // colour class is processed in parallel (TBB). Each node draws from its own generator, seeded
 // from (seed, node index, sweep): the result is the same for any number of threads.
 
-#include <CGAL/Mesh_repair/internal/c1_surface/cubic_surface.h>
+#include <CGAL/Mesh_repair/internal/c1_surface/g1_surface.h>
 #include <CGAL/Mesh_repair/internal/mga/micro_ga.h>
 #include <CGAL/Mesh_repair/internal/mga/node_star.h>
 
@@ -80,7 +80,7 @@ inline std::vector<std::vector<int>> independent_sets(const Polygon_arrays& mesh
 template <class Traits>
 class Node_smoother {
  public:
-  Node_smoother(Polygon_arrays& mesh, const Cubic_surface& surface, const std::vector<bool>& fixed,
+  Node_smoother(Polygon_arrays& mesh, const G1_surface& surface, const std::vector<bool>& fixed,
                 const Node_smoothing_settings& settings, const Traits& traits)
       : mesh_(mesh), surface_(surface), fixed_(fixed), settings_(settings), traits_(traits) {
     host_.resize(mesh.points.size());
@@ -286,7 +286,7 @@ class Node_smoother {
   }
 
   Polygon_arrays& mesh_;
-  const Cubic_surface& surface_;
+  const G1_surface& surface_;
   const std::vector<bool>& fixed_;
   Node_smoothing_settings settings_;
   const Traits& traits_;

@@ -1,19 +1,33 @@
 // Copyright (c) 2026 Mesh_repair developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef CGAL_MESH_REPAIR_INTERNAL_C1_SURFACE_CUBIC_SURFACE_H
-#define CGAL_MESH_REPAIR_INTERNAL_C1_SURFACE_CUBIC_SURFACE_H
+#ifndef CGAL_MESH_REPAIR_INTERNAL_C1_SURFACE_G1_SURFACE_H
+#define CGAL_MESH_REPAIR_INTERNAL_C1_SURFACE_G1_SURFACE_H
 
-// The smooth surface the micro-GA projects onto (Chen et al. 2.2): one cubic Bezier triangle per
-// primary triangle, built from vertex positions and vertex normals estimated by local derivative
-// estimation (a weighted quadratic height fit in each vertex's tangent plane).
+// The smooth surface the micro-GA projects onto (Chen et al. 2.2): one triangular Bezier patch
+// per primary triangle, built from vertex positions and vertex normals estimated by local
+// derivative estimation (a weighted quadratic height fit in each vertex's tangent plane).
 //
-// Every ordinate on a patch edge depends only on the edge's two vertices and their normals, so
-// neighbouring patches share their boundary curve (no cracks), and all patches at a vertex share
-// its tangent plane. Across the interior of an edge the tangent plane of a surface mesh can only
-// be matched by a split scheme with compatible twists; for functional data that is the
-// Clough-Tocher interpolant of clough_tocher.h (C1, Table 1). doc/mga_smooth.md explains the
-// choice. At feature vertices (dihedral angle below the feature angle) each smooth sector of faces
-// gets its own normal, so sharp edges stay sharp.
+// The patches are the quartic G1 patches of Walton and Meek that shape prediction already uses
+// (shape_prediction/bezier_patches.h): every edge gets one cubic boundary curve whose end
+// tangents lie in the vertex tangent planes, computed once and shared by the edge's two
+// triangles (no crack), and each patch's interior control points blend cross-boundary
+// constructions that make its tangent plane along an edge depend on that edge's curve and end
+// normals only. Two patches of a smooth edge therefore have the same tangent plane all along it:
+// the surface is tangent-plane continuous (G1) over the whole mesh, not only at the vertices.
+// (Goodman and Said's C1 split, clough_tocher.h, needs a common parameter plane: functional data
+// of Table 1.)
+//
+// `tangent_scale` s in [0, 1] shortens both end tangents of every boundary curve to s times
+// their length, keeping their directions. Each edge curve is still shared and still tangent to
+// the vertex planes, so the surface stays G1 with the same vertex normals, and it bulges off the
+// flat triangles about s times as much (measured in doc/mga_smooth.md): s trades fidelity to the
+// smooth surface the input samples (s = 1) for closeness to the input triangles. s = 0 is the
+// flat input triangles themselves (C0).
+//
+// At feature vertices (dihedral angle below the feature angle) each smooth sector of faces gets
+// its own normal, so sharp edges stay sharp; the curve of a feature edge leaves its ends along
+// the crease (the intersection of the two sectors' tangent planes), so it is shared and each
+// patch stays consistent with its own sector's plane.
 //
 // A point is mapped onto the surface as the paper does: locate it in a primary triangle (walking
 // from a nearby start triangle over the triangles' planes) and evaluate that triangle's patch at
@@ -21,6 +35,9 @@
 
 #include <CGAL/Mesh_repair/internal/c1_surface/local_derivative_estimation.h>
 #include <CGAL/Mesh_repair/internal/c1_surface/vec3.h>
+#include <CGAL/Mesh_repair/internal/shape_prediction/bezier_patches.h>
+
+#include <CGAL/Simple_cartesian.h>
 
 #include <CGAL/number_type_config.h>
 
@@ -35,7 +52,7 @@ namespace CGAL {
 namespace Mesh_repair {
 namespace internal {
 
-class Cubic_surface {
+class G1_surface {
  public:
   using Triangle = std::array<int, 3>;
   struct Location {
@@ -44,18 +61,16 @@ class Cubic_surface {
   };
 
   /// `feature_angle_deg`: an edge whose dihedral angle is below it is a feature edge.
-  /// `cubic_weight` w: the surface points are flat + w (cubic - flat), between the flat primary
-  /// triangle (w = 0) and its cubic patch (w = 1), at the same barycentric coordinates.
-  Cubic_surface(std::vector<Vec3> points, std::vector<Triangle> triangles, double feature_angle_deg,
-                double cubic_weight = 1.0)
+  /// `tangent_scale` s in [0, 1]: the end tangents of the boundary curves are s times the
+  /// point-normal ones (s = 1 Walton and Meek's patches, s = 0 the flat primary triangles).
+  G1_surface(std::vector<Vec3> points, std::vector<Triangle> triangles, double feature_angle_deg,
+             double tangent_scale = 1.0)
       : points_(std::move(points)), triangles_(std::move(triangles)) {
     build_adjacency();
     mark_feature_edges(feature_angle_deg);
     compute_corner_normals();
-    for (std::size_t t = 0; t < triangles_.size(); ++t) {
-      nets_.push_back(blend_with_flat(control_net(int(t)), cubic_weight));
-      frames_.push_back(plane_frame(int(t)));
-    }
+    for (std::size_t t = 0; t < triangles_.size(); ++t) frames_.push_back(plane_frame(int(t)));
+    if (tangent_scale > 0) build_patches(tangent_scale);
   }
 
   std::size_t number_of_vertices() const { return points_.size(); }
@@ -89,16 +104,14 @@ class Cubic_surface {
     return location;
   }
 
-  /// The surface point at a location: flat + w (patch - flat).
+  /// The surface point at a location: the patch of its triangle at its barycentric coordinates.
   Vec3 evaluate(const Location& location) const {
-    const auto& net = nets_[location.triangle];
-    const double u = location.b[0], v = location.b[1], w = location.b[2];
-    const double uu = u * u, vv = v * v, ww = w * w;
-    const double weights[10] = {uu * u,     vv * v,     ww * w,     3 * uu * v, 3 * uu * w,
-                                3 * vv * u, 3 * vv * w, 3 * ww * u, 3 * ww * v, 6 * u * v * w};
-    Vec3 sum;
-    for (int i = 0; i < 10; ++i) sum += weights[i] * net[i];
-    return sum;
+    const double* b = location.b;
+    if (nets_.empty()) {  // tangent scale 0: the flat primary triangle
+      const Triangle& t = triangles_[location.triangle];
+      return b[0] * points_[t[0]] + b[1] * points_[t[1]] + b[2] * points_[t[2]];
+    }
+    return evaluate_net(nets_[location.triangle], b[0], b[1], b[2]);
   }
 
   /// Maps `p` onto the surface; `host` is the start triangle and receives the one found.
@@ -109,8 +122,71 @@ class Cubic_surface {
   }
 
  private:
-  // Ordinates: b300 b030 b003 b210 b201 b120 b021 b102 b012 b111 (u, v, w for the corners 0 1 2).
-  using Net = std::array<Vec3, 10>;
+ private:
+  // A Walton-Meek patch in plain doubles, compact (504 bytes instead of the 1.5 kB of
+  // Quartic_triangle_patch, which keeps kernel points besides): the walk evaluates millions of
+  // them, and 52,000 of them must stay cheap to reach in memory. `control` holds the 15
+  // ordinates P_ijk (i + j + k = 4) in the order of `quartic_terms`, the three interior ones
+  // unused; `g` holds G_{c,1}, G_{c,2} of the three curves c.
+  struct Quartic_net {
+    std::array<Vec3, 15> control;
+    std::array<Vec3, 6> g;
+  };
+  struct Quartic_term {
+    int i, j, k;
+    double multinomial;
+  };
+  static constexpr std::array<Quartic_term, 15> quartic_terms = {{{0, 0, 4, 1},
+                                                                  {0, 1, 3, 4},
+                                                                  {0, 2, 2, 6},
+                                                                  {0, 3, 1, 4},
+                                                                  {0, 4, 0, 1},
+                                                                  {1, 0, 3, 4},
+                                                                  {1, 1, 2, 12},
+                                                                  {1, 2, 1, 12},
+                                                                  {1, 3, 0, 4},
+                                                                  {2, 0, 2, 6},
+                                                                  {2, 1, 1, 12},
+                                                                  {2, 2, 0, 6},
+                                                                  {3, 0, 1, 4},
+                                                                  {3, 1, 0, 4},
+                                                                  {4, 0, 0, 1}}};
+  // Terms 6, 7 and 10 are the interior ordinates P112, P121, P211.
+
+  // Eq. 5.27-5.29: a rational blend of two G points (their midpoint at the corner where both
+  // weights vanish; its Bernstein weight is zero there).
+  static Vec3 blend(double a, const Vec3& pa, double b, const Vec3& pb) {
+    return a + b > 0 ? (1.0 / (a + b)) * (a * pa + b * pb) : 0.5 * (pa + pb);
+  }
+
+  // Quartic_triangle_patch::evaluate on the compact net (same sums, same blends).
+  static Vec3 evaluate_net(const Quartic_net& net, double u, double v, double w) {
+    double pu[5], pv[5], pw[5];
+    pu[0] = pv[0] = pw[0] = 1;
+    for (int e = 1; e <= 4; ++e) {
+      pu[e] = pu[e - 1] * u;
+      pv[e] = pv[e - 1] * v;
+      pw[e] = pw[e - 1] * w;
+    }
+    const auto& g = net.g;
+    const Vec3 p112 = blend(u, g[5], v, g[0]);
+    const Vec3 p121 = blend(w, g[1], u, g[2]);
+    const Vec3 p211 = blend(v, g[3], w, g[4]);
+    Vec3 sum;
+    for (int n = 0; n < 15; ++n) {
+      const Quartic_term& term = quartic_terms[n];
+      const double weight = term.multinomial * pu[term.i] * pv[term.j] * pw[term.k];
+      const Vec3& p = n == 6 ? p112 : (n == 7 ? p121 : (n == 10 ? p211 : net.control[n]));
+      sum += weight * p;
+    }
+    return sum;
+  }
+
+  using Patch_kernel = CGAL::Simple_cartesian<double>;
+  using Patch = shape_prediction::Quartic_triangle_patch<Patch_kernel>;
+  using Patch_point = Patch_kernel::Point_3;
+  using Patch_vector = Patch_kernel::Vector_3;
+  using Curve = std::array<Patch_point, 4>;
 
   void build_adjacency() {
     const std::size_t n = points_.size();
@@ -286,46 +362,98 @@ class Cubic_surface {
     const auto gradient = estimate_gradient(samples);
     const Vec3 tilted = normalized(first - gradient[0] * t1 - gradient[1] * t2);
     // A wild fit (noisy or folded neighbourhood) must not flip the normal.
-    return dot(tilted, first) > 0.5 ? tilted : first;
+    if (!(dot(tilted, first) > 0.5)) return first;
+    // Nor may it stand more than 60 degrees off an incident face (the feature angle's 120 degree
+    // dihedral, seen from the vertex): at such a fold of a scan the G1 patch's interior
+    // construction shears the patch along the surface by up to 0.57 of an edge, whatever the
+    // tangent lengths (armadillo: 3 triangles, nodes up to 1.7e-3 of the diagonal off the input).
+    for (int t : incident_[v])
+      if (dot(tilted, face_normal_[t]) < 0.5) return first;
+    return tilted;
   }
 
-  Net control_net(int t) const {
-    const Vec3 &p0 = point(t, 0), &p1 = point(t, 1), &p2 = point(t, 2);
-    const Vec3 &n0 = corner_normal_[3 * t], &n1 = corner_normal_[3 * t + 1],
-               &n2 = corner_normal_[3 * t + 2];
-    // Edge ordinate next to corner a toward b: one third along the edge, pulled into a's tangent
-    // plane (depends on a, b and a's normal only, so both patches of an edge agree).
-    auto edge = [](const Vec3& a, const Vec3& b, const Vec3& na) {
-      return (1.0 / 3.0) * (2.0 * a + b - dot(b - a, na) * na);
-    };
-    Net b;
-    b[0] = p0, b[1] = p1, b[2] = p2;
-    b[3] = edge(p0, p1, n0), b[4] = edge(p0, p2, n0);
-    b[5] = edge(p1, p0, n1), b[6] = edge(p1, p2, n1);
-    b[7] = edge(p2, p0, n2), b[8] = edge(p2, p1, n2);
-    Vec3 edge_mean;
-    for (int i = 3; i < 9; ++i) edge_mean += (1.0 / 6.0) * b[i];
-    const Vec3 centroid = (1.0 / 3.0) * (p0 + p1 + p2);
-    b[9] = edge_mean + 0.5 * (edge_mean - centroid);
-    return b;
-  }
+  static Patch_point to_point(const Vec3& p) { return Patch_point(p[0], p[1], p[2]); }
+  static Patch_vector to_vector(const Vec3& v) { return Patch_vector(v[0], v[1], v[2]); }
 
-  // flat + w (patch - flat) is itself a cubic Bezier triangle: the flat triangle, degree-elevated
-  // to three, has its ordinates at the thirds of the edges and at the centroid, so blending the
-  // nets blends the surfaces (no cost per evaluation). Both patches of an edge blend the same
-  // edge ordinates with the same chord points: still no crack.
-  static Net blend_with_flat(Net net, double w) {
-    if (w == 1) return net;
-    const Vec3 p[3] = {net[0], net[1], net[2]};
-    // Ordinates 3..8: b210 b201 b120 b021 b102 b012, i.e. next to corner a toward corner b.
-    const int a[6] = {0, 0, 1, 1, 2, 2}, b[6] = {1, 2, 0, 2, 0, 1};
-    for (int i = 0; i < 6; ++i) {
-      const Vec3 flat = (1.0 / 3.0) * (2.0 * p[a[i]] + p[b[i]]);
-      net[3 + i] = flat + w * (net[3 + i] - flat);
+  // The boundary curve of the edge opposite corner i of triangle t, from corner i + 2 to corner
+  // i + 1 (the direction in which the patch of t runs along it), its end tangents shortened by
+  // `scale`. It is computed from the lower vertex index to the higher one and
+  // reversed when needed, so the neighbour across the edge gets the very same control points: no
+  // crack.
+  Curve edge_curve(int t, int i, double scale) const {
+    const int slot = 3 * t + i;
+    int from = (i + 2) % 3, to = (i + 1) % 3;
+    const bool reversed = triangles_[t][from] > triangles_[t][to];
+    if (reversed) std::swap(from, to);
+    const Vec3 &p = point(t, from), &q = point(t, to);
+    const Vec3 &np = corner_normal_[3 * t + from], &nq = corner_normal_[3 * t + to];
+    Curve curve;
+    const int other = neighbour_[slot];
+    if (feature_edge_[slot] && other >= 0) {
+      // The neighbour's sector normals at p and q; crease_curve is symmetric in the two sides.
+      const Vec3& mp = corner_normal_[3 * other + corner_of(other, triangles_[t][from])];
+      const Vec3& mq = corner_normal_[3 * other + corner_of(other, triangles_[t][to])];
+      curve = crease_curve(p, np, mp, q, nq, mq);
+    } else {
+      curve = Patch::boundary_cubic(to_point(p), to_vector(np), to_point(q), to_vector(nq));
     }
-    const Vec3 centroid = (1.0 / 3.0) * (p[0] + p[1] + p[2]);
-    net[9] = centroid + w * (net[9] - centroid);
-    return net;
+    curve[1] = curve[0] + scale * (curve[1] - curve[0]);
+    curve[2] = curve[3] + scale * (curve[2] - curve[3]);
+    if (reversed) std::reverse(curve.begin(), curve.end());
+    return curve;
+  }
+
+  // A feature edge from p to q between two sectors (normals n and m at each end): the curve
+  // leaves each end along the crease n x m, which lies in both sectors' tangent planes, so each
+  // patch's corner stays consistent with its own normal. Where the crease is undefined (the
+  // sectors' normals within 3 degrees at an end) the curve is the point-normal cubic of the mean
+  // normals; where it runs across the edge (more than 60 degrees off the chord at an end), the
+  // straight chord. Every test is symmetric in the two sides, so both build the same curve.
+  static Curve crease_curve(const Vec3& p, const Vec3& np, const Vec3& mp, const Vec3& q,
+                            const Vec3& nq, const Vec3& mq) {
+    const Vec3 chord = q - p;
+    const double d = length(chord);
+    const Vec3 crease[2] = {cross(np, mp), cross(nq, mq)};
+    if (length(crease[0]) < 0.05 || length(crease[1]) < 0.05)
+      return Patch::boundary_cubic(to_point(p), to_vector(normalized(np + mp)), to_point(q),
+                                   to_vector(normalized(nq + mq)));
+    Vec3 tangent[2];
+    for (int e = 0; e < 2; ++e) {
+      tangent[e] = normalized(crease[e]);
+      const double along = dot(tangent[e], chord) / d;
+      if (std::abs(along) < 0.5)
+        return {to_point(p), to_point(p + (1.0 / 3.0) * chord), to_point(p + (2.0 / 3.0) * chord),
+                to_point(q)};
+      if (along < 0) tangent[e] = -1.0 * tangent[e];
+    }
+    return {to_point(p), to_point(p + (d / 3.0) * tangent[0]), to_point(q - (d / 3.0) * tangent[1]),
+            to_point(q)};
+  }
+
+  Patch make_patch(int t, double scale) const {
+    // Patch curves: 0 from C to B (opposite corner 0), 1 from B to A (opposite 2), 2 from A to C
+    // (opposite 1); `edge_curve` runs in exactly these directions.
+    const typename Patch::Boundary_cubics curves = {
+        edge_curve(t, 0, scale), edge_curve(t, 2, scale), edge_curve(t, 1, scale)};
+    const std::array<Patch_vector, 3> normals = {to_vector(corner_normal_[3 * t]),
+                                                 to_vector(corner_normal_[3 * t + 1]),
+                                                 to_vector(corner_normal_[3 * t + 2])};
+    return Patch(normals, curves);
+  }
+
+  void build_patches(double scale) {
+    nets_.reserve(triangles_.size());
+    for (std::size_t t = 0; t < triangles_.size(); ++t) {
+      const Patch patch = make_patch(int(t), scale);
+      Quartic_net net;
+      auto to_vec3 = [](const Patch_point& p) { return Vec3(p.x(), p.y(), p.z()); };
+      for (int n = 0; n < 15; ++n)
+        if (n != 6 && n != 7 && n != 10)  // the interior ordinates are blends of `g`
+          net.control[n] = to_vec3(patch.boundary_control(quartic_terms[n].i, quartic_terms[n].j));
+      for (int c = 0; c < 3; ++c)
+        for (int k = 0; k < 2; ++k) net.g[2 * c + k] = to_vec3(patch.interior_control(c, k));
+      nets_.push_back(net);
+    }
   }
 
   // What the barycentric coordinates of a point projected on a triangle's plane need, computed
@@ -378,7 +506,7 @@ class Cubic_surface {
   std::vector<Vec3> face_normal_;
   std::vector<double> face_area_;
   std::vector<Vec3> vertex_normal_, corner_normal_;
-  std::vector<Net> nets_;
+  std::vector<Quartic_net> nets_;  // empty for tangent scale 0 (the flat triangles)
   std::vector<Plane_frame> frames_;
 };
 
@@ -386,4 +514,4 @@ class Cubic_surface {
 }  // namespace Mesh_repair
 }  // namespace CGAL
 
-#endif  // CGAL_MESH_REPAIR_INTERNAL_C1_SURFACE_CUBIC_SURFACE_H
+#endif  // CGAL_MESH_REPAIR_INTERNAL_C1_SURFACE_G1_SURFACE_H
