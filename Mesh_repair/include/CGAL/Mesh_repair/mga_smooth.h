@@ -115,9 +115,10 @@ Mga_smooth_result smooth_with(PolygonMesh& pm, const NamedParameters& np,
       choose_parameter(get_parameter(np, internal_np::feature_angle_deg_t()), 120.0);
   // `cubic_surface_weight` is the deprecated name of the same number (it blended a C0 cubic
   // surface with the flat triangles; the G1 surface shortens its tangents instead).
-  const double tangent_scale = choose_parameter(
-      get_parameter(np, internal_np::surface_tangent_scale_t()),
-      choose_parameter(get_parameter(np, internal_np::cubic_surface_weight_t()), 0.5));
+  const double tangent_scale =
+      choose_parameter(get_parameter(np, internal_np::surface_tangent_scale_t()),
+                       choose_parameter(get_parameter(np, internal_np::cubic_surface_weight_t()),
+                                        default_surface_tangent_scale));
 
   // Index arrays of the mesh.
   visitor.start_step("G1 surface");
@@ -195,7 +196,7 @@ Mga_smooth_result smooth_with(PolygonMesh& pm, const NamedParameters& np,
 /// triangles) and beta (eq. 7-8, quads) of the node's elements, each trial position being mapped
 /// onto a tangent-plane continuous (G1) surface of quartic Bezier patches rebuilt from the input
 /// mesh and its estimated vertex normals (section 2.2), by default with its boundary curves'
-/// tangents halved so that it bulges half as far off the input triangles
+/// tangents shortened to 0.45 so that it bulges about half as far off the input triangles
 /// (`surface_tangent_scale`, doc/mga_smooth.md); the best
 /// position over the elements is taken if it raises the fitness and folds no element (exact
 /// orientation test).
@@ -228,8 +229,8 @@ Mga_smooth_result smooth_with(PolygonMesh& pm, const NamedParameters& np,
 ///     directions, so still G1 with the same vertex normals); it lies about s times as far off
 ///     the input triangles as the full surface. 0 = the input triangles, 1 = the full Walton-Meek
 ///     surface (the paper's mapping onto the smooth surface, closest to the surface the input
-///     samples), 0.5 = within about half the input's chordal deviation of both}
-///     \cgalParamType{double in [0, 1]} \cgalParamDefault{0.5}
+///     samples); the default is as far from the input triangles as from the true surface on the
+///     saddles of doc/mga_smooth.md} \cgalParamType{double in [0, 1]} \cgalParamDefault{0.45}
 ///     \cgalParamExtra{`cubic_surface_weight` is its deprecated name (read when
 ///     `surface_tangent_scale` is absent).} \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_is_constrained_map} \cgalParamDescription{nodes that must not move}

@@ -52,6 +52,11 @@ namespace CGAL {
 namespace Mesh_repair {
 namespace internal {
 
+/// The tangent scale mga_smooth uses unless told otherwise: on both test saddles it minimises the
+/// larger of the nodes' distances to the input triangles and to the true surface, the two being
+/// equal there (doc/mga_smooth.md, "Distance to the input against fidelity").
+constexpr double default_surface_tangent_scale = 0.45;
+
 class G1_surface {
  public:
   using Triangle = std::array<int, 3>;
