@@ -18,6 +18,8 @@
 #include <CGAL/Dynamic_property_map.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <vector>
 
 namespace CGAL {
@@ -29,6 +31,8 @@ struct Mga_smooth_result {
   std::size_t free_nodes = 0;
   std::size_t border_nodes = 0;   ///< fixed: on a border
   std::size_t feature_nodes = 0;  ///< fixed: on a feature line (sharp edges, spurs excluded)
+  std::size_t sliding_nodes =
+      0;  ///< inside a feature line, sliding along it (`slide_feature_nodes`)
   std::size_t constrained_nodes =
       0;                           ///< fixed by `vertex_is_constrained_map` or a face of degree > 4
   std::size_t moves = 0;           ///< accepted node moves over all sweeps
@@ -55,6 +59,21 @@ inline std::pair<double, double> worst_and_mean_quality(const Polygon_arrays& me
     ++count;
   }
   return count ? std::make_pair(worst, sum / double(count)) : std::make_pair(0.0, 0.0);
+}
+
+// A feature vertex inside a feature line: exactly two feature edges meet there, and the line
+// turns there by less than 30 degrees (a sharper turn is a joint, which stays fixed, as corners
+// and line ends do: "the points at the edges and joints have to be marked and fixed"). `path`
+// receives the two neighbours along the line.
+inline bool inside_feature_line(const G1_surface& surface, int v, std::array<int, 2>& path) {
+  const std::vector<int> neighbours = surface.feature_neighbours(v);
+  if (neighbours.size() != 2) return false;
+  const Vec3& p = surface.points()[v];
+  const Vec3 d0 = normalized(surface.points()[neighbours[0]] - p);
+  const Vec3 d1 = normalized(surface.points()[neighbours[1]] - p);
+  if (!(dot(d0, d1) < -std::cos(30.0 * CGAL_PI / 180.0))) return false;
+  path = {neighbours[0], neighbours[1]};
+  return true;
 }
 
 // Splits faces into the primary triangles of the G1 surface: quads along their shorter
@@ -120,6 +139,9 @@ Mga_smooth_result smooth_with(PolygonMesh& pm, const NamedParameters& np,
                        choose_parameter(get_parameter(np, internal_np::cubic_surface_weight_t()),
                                         default_surface_tangent_scale));
 
+  const bool slide_feature_nodes =
+      choose_parameter(get_parameter(np, internal_np::slide_feature_nodes_t()), false);
+
   // Index arrays of the mesh.
   visitor.start_step("G1 surface");
   auto index = CGAL::get_initialized_vertex_index_map(pm);
@@ -152,13 +174,20 @@ Mga_smooth_result smooth_with(PolygonMesh& pm, const NamedParameters& np,
   mesh.build_incidence();
   const G1_surface surface(mesh.points, primary_triangles(mesh, big_faces), feature_angle_deg,
                            std::min(1.0, std::max(0.0, tangent_scale)));
+  std::vector<std::array<int, 2>> feature_path(slide_feature_nodes ? mesh.points.size() : 0,
+                                               std::array<int, 2>{-1, -1});
   for (std::size_t v = 0; v < mesh.points.size(); ++v) {
     if (mesh.incidence_start[v] == mesh.incidence_start[v + 1]) {
       fixed[v] = true;  // isolated vertex: nothing to smooth
     } else if (surface.is_border_vertex(int(v))) {
       fixed[v] = true, ++result.border_nodes;
     } else if (surface.is_feature_vertex(int(v))) {
-      fixed[v] = true, ++result.feature_nodes;
+      if (slide_feature_nodes && !fixed[v] && !get(constrained, vertex_of[v]) &&
+          inside_feature_line(surface, int(v), feature_path[v])) {
+        ++result.sliding_nodes;
+      } else {
+        fixed[v] = true, ++result.feature_nodes;
+      }
     } else if (fixed[v] || get(constrained, vertex_of[v])) {
       fixed[v] = true, ++result.constrained_nodes;
     } else {
@@ -170,7 +199,7 @@ Mga_smooth_result smooth_with(PolygonMesh& pm, const NamedParameters& np,
   std::tie(result.worst_quality_before, result.mean_quality_before) = worst_and_mean_quality(mesh);
   visitor.start_step(optimizer == Node_optimizer::micro_ga ? "micro-GA smoothing"
                                                            : "conjugate-gradient smoothing");
-  Node_smoother<GT> smoother(mesh, surface, fixed, settings, traits);
+  Node_smoother<GT> smoother(mesh, surface, fixed, settings, traits, std::move(feature_path));
   const Node_smoothing_statistics statistics =
       smoother.run([&](double fraction) { return bool(visitor.progress(fraction)); });
   visitor.end_step(optimizer == Node_optimizer::micro_ga ? "micro-GA smoothing"
@@ -233,6 +262,11 @@ Mga_smooth_result smooth_with(PolygonMesh& pm, const NamedParameters& np,
 ///     saddles of doc/mga_smooth.md} \cgalParamType{double in [0, 1]} \cgalParamDefault{0.45}
 ///     \cgalParamExtra{`cubic_surface_weight` is its deprecated name (read when
 ///     `surface_tangent_scale` is absent).} \cgalParamNEnd
+///   \cgalParamNBegin{slide_feature_nodes} \cgalParamDescription{nodes inside a feature line
+///     (two sharp edges meeting at less than a 30 degree turn) slide along the line's curve, at
+///     most half-way to their neighbours, instead of staying fixed; line ends, joints and corners
+///     stay fixed. Off by default: the paper fixes every feature node}
+///     \cgalParamType{bool} \cgalParamDefault{false} \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_is_constrained_map} \cgalParamDescription{nodes that must not move}
 ///     \cgalParamType{readable vertex property map to bool} \cgalParamDefault{none} \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_threads} \cgalParamDescription{threads (TBB) over independent

@@ -85,6 +85,36 @@ class G1_surface {
   int triangle_of_vertex(int v) const { return vertex_triangle_[v]; }
   bool is_feature_vertex(int v) const { return feature_vertex_[v]; }
   bool is_border_vertex(int v) const { return border_vertex_[v]; }
+  /// The vertices joined to `v` by a feature edge, each once.
+  std::vector<int> feature_neighbours(int v) const {
+    std::vector<int> result;
+    for (int t : incident_[v])
+      for (int i = 0; i < 3; ++i) {
+        if (!feature_edge_[3 * t + i]) continue;
+        const int a = triangles_[t][(i + 1) % 3], b = triangles_[t][(i + 2) % 3];
+        if (a == v || b == v) result.push_back(a == v ? b : a);
+      }
+    std::sort(result.begin(), result.end());
+    result.erase(std::unique(result.begin(), result.end()), result.end());
+    return result;
+  }
+
+  /// The point at parameter `t` (0 at `v`, 1 at `u`) of the surface's curve over the edge v-u:
+  /// the shared boundary curve of its patches (the chord for tangent scale 0).
+  Vec3 edge_point(int v, int u, double t) const {
+    for (int f : incident_[v]) {
+      const Triangle& c = triangles_[f];
+      if (c[0] != u && c[1] != u && c[2] != u) continue;
+      Location at;
+      at.triangle = f;
+      at.b[0] = at.b[1] = at.b[2] = 0;
+      at.b[corner_of(f, v)] = 1 - t;
+      at.b[corner_of(f, u)] = t;
+      return evaluate(at);
+    }
+    return points_[v];  // not an edge
+  }
+
   /// The estimated unit normal at `v` (for a feature vertex, that of its first sector).
   const Vec3& vertex_normal(int v) const { return vertex_normal_[v]; }
 
