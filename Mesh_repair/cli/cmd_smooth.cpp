@@ -28,7 +28,8 @@ namespace mesh_repair_cli {
 const char* const smooth_help =
     "usage: mesh_repair smooth IN -o OUT [--method mga|cg|cgal] [--quads] [--iterations N]\n"
     "                         [--seed S] [--threads N] [--generations G] [--feature-angle DEG]\n"
-    "                         [--tangent-scale S] [--report R.json] [--quiet]\n"
+    "                         [--tangent-scale S] [--slide-feature-nodes] [--report R.json]\n"
+    "                         [--quiet]\n"
     "  mga   micro-genetic node smoothing on a G1 surface rebuilt from IN (Chen et al.)\n"
     "  cg    the same with a conjugate-gradient search per node (the paper's baseline)\n"
     "  cgal  CGAL's angle_and_area_smoothing then tangential_relaxation (triangles only)\n"
@@ -38,7 +39,8 @@ const char* const smooth_help =
     "  --tangent-scale S (mga/cg): the surface's boundary curves keep S times their end\n"
     "  tangents: 0 = the input triangles, 1 = the full G1 surface, which bulges about 1/S\n"
     "  times as far off the input; default 0.45 (doc/mga_smooth.md). --cubic-weight is its\n"
-    "  deprecated name.\n";
+    "  deprecated name. --slide-feature-nodes (mga/cg): nodes inside a feature line slide\n"
+    "  along it instead of staying fixed (joints, corners and line ends stay fixed).\n";
 
 namespace {
 
@@ -97,7 +99,7 @@ void write_quality(MR::internal::Json_writer& json, const std::string& name, con
 }  // namespace
 
 int run_smooth(const std::vector<std::string>& args) {
-  Arguments arguments(args, {"--quads", "--quiet"},
+  Arguments arguments(args, {"--quads", "--quiet", "--slide-feature-nodes"},
                       {"-o", "--method", "--iterations", "--seed", "--threads", "--generations",
                        "--feature-angle", "--tangent-scale", "--cubic-weight", "--report"});
   const std::string input = arguments.single_input(smooth_help);
@@ -151,6 +153,7 @@ int run_smooth(const std::vector<std::string>& args) {
                   .random_seed(seed)
                   .number_of_iterations(iterations)
                   .surface_tangent_scale(tangent_scale)
+                  .slide_feature_nodes(arguments.has("--slide-feature-nodes"))
                   .visitor(std::ref(bar));
     result = method == "mga" ? MR::mga_smooth(mesh, np) : MR::conjugate_gradient_smooth(mesh, np);
   }
@@ -196,6 +199,7 @@ int run_smooth(const std::vector<std::string>& args) {
       json.field("rejected_folds", result.rejected_folds).field("converged", result.converged);
       json.field("free_nodes", result.free_nodes).field("border_nodes", result.border_nodes);
       json.field("feature_nodes", result.feature_nodes);
+      json.field("sliding_nodes", result.sliding_nodes);
       json.field("constrained_nodes", result.constrained_nodes);
       json.end_object();
     }
