@@ -6,8 +6,9 @@
 //   bench_mga_smooth [DEMO_MESH_DIR] [THREADS] [MESHES] [REPEATS]
 // MESHES: comma-separated file names (default fandisk.off,femur.off,armadillo.off; "none" skips
 // them); REPEATS: each smoothing runs that many times on a fresh copy, CPU and wall time are the
-// best of the runs (default 1). `bench_mga_smooth DIR THREADS MESH 0 N` only runs the micro-GA on
-// MESH N times (for a profiler).
+// best of the runs (default 1). `bench_mga_smooth DIR THREADS MESH 0 N [ANGLE SWEEPS SCALE]` only
+// runs the micro-GA on MESH ("saddle" for the analytic one) N times (for a profiler, and to
+// choose the surface tangent scale).
 #include <CGAL/Mesh_repair/internal/c1_surface/clough_tocher.h>
 #include <CGAL/Mesh_repair/mga_smooth.h>
 #include <CGAL/Mesh_repair/triangles_to_quads.h>
@@ -200,14 +201,21 @@ void compare(const std::string& object, const Mesh& triangles, int threads) {
     auto mga1 = [](Mesh& m) { MR::mga_smooth(m, CGAL::parameters::random_seed(1)); };
     row(object, "tri", "MGA (1 thread)", triangles, mga1, triangles);
   }
-  // The paper's mapping: nodes on the cubic surface itself (the default is half-way between it
-  // and the input triangles, doc/mga_smooth.md).
-  auto mga_cubic = [threads](Mesh& m) {
+  // The paper's mapping: nodes on the full smooth surface (the default halves its boundary
+  // curves' tangents, so it bulges half as far off the input triangles, doc/mga_smooth.md).
+  auto mga_full = [threads](Mesh& m) {
     MR::mga_smooth(
-        m, MR::parameters::number_of_threads(threads).random_seed(1).cubic_surface_weight(1.0));
+        m, MR::parameters::number_of_threads(threads).random_seed(1).surface_tangent_scale(1.0));
   };
-  row(object, "tri", "MGA (" + std::to_string(threads) + " threads, cubic weight 1)", triangles,
-      mga_cubic, triangles);
+  row(object, "tri", "MGA (" + std::to_string(threads) + " threads, tangent scale 1)", triangles,
+      mga_full, triangles);
+  // Option: nodes inside feature lines slide along them (the paper fixes them).
+  auto mga_slide = [threads](Mesh& m) {
+    MR::mga_smooth(
+        m, MR::parameters::number_of_threads(threads).random_seed(1).slide_feature_nodes(true));
+  };
+  row(object, "tri", "MGA (" + std::to_string(threads) + " threads, sliding feature nodes)",
+      triangles, mga_slide, triangles);
   if (object == "femur.off") {
     // A noisy scan: at 120 degrees 1,768 of its 3,897 nodes sit on "feature" edges and stay
     // fixed; it has no real sharp edge, so a lower feature angle frees them.
@@ -270,9 +278,13 @@ int main(int argc, char** argv) {
     const int runs = argc > 5 ? std::atoi(argv[5]) : 1;
     const double feature_angle = argc > 6 ? std::atof(argv[6]) : 120.0;
     const int sweeps = argc > 7 ? std::atoi(argv[7]) : 3;
+    const double tangent_scale = argc > 8 ? std::atof(argv[8]) : 0.5;
     for (const std::string& name : meshes) {
       Mesh mesh;
-      if (!PMP::IO::read_polygon_mesh(demo + "/" + name, mesh)) return 1;
+      if (name == "saddle")
+        mesh = saddle();
+      else if (!PMP::IO::read_polygon_mesh(demo + "/" + name, mesh))
+        return 1;
       for (int run = 0; run < runs; ++run) {
         Mesh copy = mesh;
         const auto start = std::chrono::steady_clock::now();
@@ -280,16 +292,24 @@ int main(int argc, char** argv) {
         const auto r = MR::mga_smooth(copy, MR::parameters::number_of_threads(threads)
                                                 .random_seed(1)
                                                 .feature_angle_deg(feature_angle)
-                                                .number_of_iterations(sweeps));
+                                                .number_of_iterations(sweeps)
+                                                .surface_tangent_scale(tangent_scale));
         const double cpu = double(std::clock() - cpu_start) / CLOCKS_PER_SEC;
         const double wall =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        double truth = 0;  // saddle: largest |z - f(x, y)| / diagonal
+        if (name == "saddle")
+          for (auto v : vertices(copy)) {
+            const Point& p = copy.point(v);
+            truth = std::max(truth, std::abs(p.z() - (p.x() * p.x() / 10 - p.y() * p.y() / 4)));
+          }
         std::printf(
             "%s: mean %.4f -> %.4f, worst %.4f -> %.4f, %zu moves, %d sweeps, %zu fixed "
-            "by features, max distance / diagonal %.2e, CPU %.3f s, wall %.3f s\n",
+            "by features, max distance / diagonal %.2e (to the true saddle %.2e), CPU %.3f s, "
+            "wall %.3f s\n",
             name.c_str(), r.mean_quality_before, r.mean_quality_after, r.worst_quality_before,
             r.worst_quality_after, r.moves, r.sweeps, r.feature_nodes,
-            max_distance(copy, mesh) / diagonal(mesh), cpu, wall);
+            max_distance(copy, mesh) / diagonal(mesh), truth / diagonal(mesh), cpu, wall);
       }
     }
     return 0;

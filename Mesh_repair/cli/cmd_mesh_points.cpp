@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // mesh_repair mesh-points: surface meshing of unorganised points (Chen et al. 2.1): CGAL's
 // advancing-front surface reconstruction builds the primary triangulation, quality edge flips
-// clean it, optional conversion to quads, then micro-GA smoothing on the rebuilt cubic surface.
+// clean it, optional conversion to quads, then micro-GA smoothing on the rebuilt G1 surface.
 #include "commands.h"
 #include "common.h"
 
@@ -27,7 +27,7 @@ const char* const mesh_points_help =
     "                              [--report R.json] [--quiet]\n"
     "  Triangulates unorganised points with CGAL's advancing-front reconstruction, flips edges\n"
     "  to raise quality, optionally converts to quads, and smooths with the micro-GA, nodes on\n"
-    "  the cubic surface through the points (the paper's mapping).\n";
+    "  the G1 surface through the points (the paper's mapping).\n";
 
 int run_mesh_points(const std::vector<std::string>& args) {
   namespace MR = CGAL::Mesh_repair;
@@ -72,7 +72,7 @@ int run_mesh_points(const std::vector<std::string>& args) {
                                          .number_of_threads(threads)
                                          .random_seed(seed)
                                          .number_of_iterations(iterations)
-                                         .cubic_surface_weight(1.0)
+                                         .surface_tangent_scale(1.0)
                                          .visitor(std::ref(bar)));
   const double seconds = seconds_since(start);
   save_mesh(output, mesh);

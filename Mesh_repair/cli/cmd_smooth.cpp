@@ -1,6 +1,6 @@
 // Copyright (c) 2026 Mesh_repair developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
-// mesh_repair smooth: micro-GA smoothing on the rebuilt cubic surface (Chen et al.), the paper's
+// mesh_repair smooth: micro-GA smoothing on the rebuilt G1 surface (Chen et al.), the paper's
 // conjugate-gradient baseline, or CGAL's angle_and_area_smoothing + tangential_relaxation, with
 // the same quality and distance measures for all three.
 #include "commands.h"
@@ -28,15 +28,19 @@ namespace mesh_repair_cli {
 const char* const smooth_help =
     "usage: mesh_repair smooth IN -o OUT [--method mga|cg|cgal] [--quads] [--iterations N]\n"
     "                         [--seed S] [--threads N] [--generations G] [--feature-angle DEG]\n"
-    "                         [--cubic-weight W] [--report R.json] [--quiet]\n"
-    "  mga   micro-genetic node smoothing on a cubic surface rebuilt from IN (Chen et al.)\n"
+    "                         [--tangent-scale S] [--slide-feature-nodes] [--report R.json]\n"
+    "                         [--quiet]\n"
+    "  mga   micro-genetic node smoothing on a G1 surface rebuilt from IN (Chen et al.)\n"
     "  cg    the same with a conjugate-gradient search per node (the paper's baseline)\n"
     "  cgal  CGAL's angle_and_area_smoothing then tangential_relaxation (triangles only)\n"
     "  --quads converts IN to quads first (best-beta pairs, node elimination, edge swaps).\n"
     "  Quality is alpha (triangles) / beta (quads); --iterations is the number of sweeps\n"
     "  (default 3 for mga/cg, 1 for cgal); the report's `seconds` times the smoothing only.\n"
-    "  --cubic-weight W (mga/cg): nodes lie at flat + W (cubic - flat) between the input\n"
-    "  triangles (0) and the rebuilt cubic surface (1); default 0.5 (doc/mga_smooth.md).\n";
+    "  --tangent-scale S (mga/cg): the surface's boundary curves keep S times their end\n"
+    "  tangents: 0 = the input triangles, 1 = the full G1 surface, which bulges about 1/S\n"
+    "  times as far off the input; default 0.45 (doc/mga_smooth.md). --cubic-weight is its\n"
+    "  deprecated name. --slide-feature-nodes (mga/cg): nodes inside a feature line slide\n"
+    "  along it instead of staying fixed (joints, corners and line ends stay fixed).\n";
 
 namespace {
 
@@ -95,9 +99,9 @@ void write_quality(MR::internal::Json_writer& json, const std::string& name, con
 }  // namespace
 
 int run_smooth(const std::vector<std::string>& args) {
-  Arguments arguments(args, {"--quads", "--quiet"},
+  Arguments arguments(args, {"--quads", "--quiet", "--slide-feature-nodes"},
                       {"-o", "--method", "--iterations", "--seed", "--threads", "--generations",
-                       "--feature-angle", "--cubic-weight", "--report"});
+                       "--feature-angle", "--tangent-scale", "--cubic-weight", "--report"});
   const std::string input = arguments.single_input(smooth_help);
   const std::string output = arguments.get("-o");
   if (output.empty()) throw Input_error("smooth: -o OUT is required");
@@ -112,11 +116,12 @@ int run_smooth(const std::vector<std::string>& args) {
   const int threads = int(arguments.get_int("--threads", 1));
   const int generations = int(arguments.get_int("--generations", 3));
   const double feature_angle = arguments.get_double("--feature-angle", 120.0);
-  const double cubic_weight = arguments.get_double("--cubic-weight", 0.5);
+  const double tangent_scale = arguments.get_double(
+      "--tangent-scale", arguments.get_double("--cubic-weight", 0.45));  // the deprecated name
   if (iterations < 0 || threads < 1 || generations < 1)
     throw Input_error("smooth: --iterations >= 0, --threads >= 1, --generations >= 1");
-  if (!(cubic_weight >= 0 && cubic_weight <= 1))
-    throw Input_error("smooth: --cubic-weight must be in [0, 1]");
+  if (!(tangent_scale >= 0 && tangent_scale <= 1))
+    throw Input_error("smooth: --tangent-scale must be in [0, 1]");
 
   Mesh mesh;
   MR::Soup_repair_report soup;
@@ -147,7 +152,8 @@ int run_smooth(const std::vector<std::string>& args) {
                   .max_generations(generations)
                   .random_seed(seed)
                   .number_of_iterations(iterations)
-                  .cubic_surface_weight(cubic_weight)
+                  .surface_tangent_scale(tangent_scale)
+                  .slide_feature_nodes(arguments.has("--slide-feature-nodes"))
                   .visitor(std::ref(bar));
     result = method == "mga" ? MR::mga_smooth(mesh, np) : MR::conjugate_gradient_smooth(mesh, np);
   }
@@ -193,6 +199,7 @@ int run_smooth(const std::vector<std::string>& args) {
       json.field("rejected_folds", result.rejected_folds).field("converged", result.converged);
       json.field("free_nodes", result.free_nodes).field("border_nodes", result.border_nodes);
       json.field("feature_nodes", result.feature_nodes);
+      json.field("sliding_nodes", result.sliding_nodes);
       json.field("constrained_nodes", result.constrained_nodes);
       json.end_object();
     }

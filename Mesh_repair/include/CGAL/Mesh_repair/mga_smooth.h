@@ -4,7 +4,7 @@
 #define CGAL_MESH_REPAIR_MGA_SMOOTH_H
 
 /// \file mga_smooth.h
-/// Micro-genetic node smoothing of triangle and quad surface meshes on a smooth cubic surface
+/// Micro-genetic node smoothing of triangle and quad surface meshes on a smooth (G1) surface
 /// rebuilt from the mesh itself (Chen, Hsu, Lin, sections 2.2 and 3), and the paper's
 /// gradient-based baseline. See doc/mga_smooth.md.
 
@@ -18,6 +18,8 @@
 #include <CGAL/Dynamic_property_map.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <vector>
 
 namespace CGAL {
@@ -29,6 +31,8 @@ struct Mga_smooth_result {
   std::size_t free_nodes = 0;
   std::size_t border_nodes = 0;   ///< fixed: on a border
   std::size_t feature_nodes = 0;  ///< fixed: on a feature line (sharp edges, spurs excluded)
+  std::size_t sliding_nodes =
+      0;  ///< inside a feature line, sliding along it (`slide_feature_nodes`)
   std::size_t constrained_nodes =
       0;                           ///< fixed by `vertex_is_constrained_map` or a face of degree > 4
   std::size_t moves = 0;           ///< accepted node moves over all sweeps
@@ -57,7 +61,22 @@ inline std::pair<double, double> worst_and_mean_quality(const Polygon_arrays& me
   return count ? std::make_pair(worst, sum / double(count)) : std::make_pair(0.0, 0.0);
 }
 
-// Splits faces into the primary triangles of the cubic surface: quads along their shorter
+// A feature vertex inside a feature line: exactly two feature edges meet there, and the line
+// turns there by less than 30 degrees (a sharper turn is a joint, which stays fixed, as corners
+// and line ends do: "the points at the edges and joints have to be marked and fixed"). `path`
+// receives the two neighbours along the line.
+inline bool inside_feature_line(const G1_surface& surface, int v, std::array<int, 2>& path) {
+  const std::vector<int> neighbours = surface.feature_neighbours(v);
+  if (neighbours.size() != 2) return false;
+  const Vec3& p = surface.points()[v];
+  const Vec3 d0 = normalized(surface.points()[neighbours[0]] - p);
+  const Vec3 d1 = normalized(surface.points()[neighbours[1]] - p);
+  if (!(dot(d0, d1) < -std::cos(30.0 * CGAL_PI / 180.0))) return false;
+  path = {neighbours[0], neighbours[1]};
+  return true;
+}
+
+// Splits faces into the primary triangles of the G1 surface: quads along their shorter
 // diagonal, larger faces as fans.
 inline std::vector<std::array<int, 3>> primary_triangles(const Polygon_arrays& mesh,
                                                          const std::vector<std::vector<int>>& big) {
@@ -113,11 +132,18 @@ Mga_smooth_result smooth_with(PolygonMesh& pm, const NamedParameters& np,
       int(choose_parameter(get_parameter(np, internal_np::max_generations_t()), 3));
   const double feature_angle_deg =
       choose_parameter(get_parameter(np, internal_np::feature_angle_deg_t()), 120.0);
-  const double cubic_surface_weight =
-      choose_parameter(get_parameter(np, internal_np::cubic_surface_weight_t()), 0.5);
+  // `cubic_surface_weight` is the deprecated name of the same number (it blended a C0 cubic
+  // surface with the flat triangles; the G1 surface shortens its tangents instead).
+  const double tangent_scale =
+      choose_parameter(get_parameter(np, internal_np::surface_tangent_scale_t()),
+                       choose_parameter(get_parameter(np, internal_np::cubic_surface_weight_t()),
+                                        default_surface_tangent_scale));
+
+  const bool slide_feature_nodes =
+      choose_parameter(get_parameter(np, internal_np::slide_feature_nodes_t()), false);
 
   // Index arrays of the mesh.
-  visitor.start_step("cubic surface");
+  visitor.start_step("G1 surface");
   auto index = CGAL::get_initialized_vertex_index_map(pm);
   std::vector<vertex_descriptor> vertex_of(num_vertices(pm));
   Polygon_arrays mesh;
@@ -146,27 +172,34 @@ Mga_smooth_result smooth_with(PolygonMesh& pm, const NamedParameters& np,
     }
   }
   mesh.build_incidence();
-  const Cubic_surface surface(mesh.points, primary_triangles(mesh, big_faces), feature_angle_deg,
-                              std::min(1.0, std::max(0.0, cubic_surface_weight)));
+  const G1_surface surface(mesh.points, primary_triangles(mesh, big_faces), feature_angle_deg,
+                           std::min(1.0, std::max(0.0, tangent_scale)));
+  std::vector<std::array<int, 2>> feature_path(slide_feature_nodes ? mesh.points.size() : 0,
+                                               std::array<int, 2>{-1, -1});
   for (std::size_t v = 0; v < mesh.points.size(); ++v) {
     if (mesh.incidence_start[v] == mesh.incidence_start[v + 1]) {
       fixed[v] = true;  // isolated vertex: nothing to smooth
     } else if (surface.is_border_vertex(int(v))) {
       fixed[v] = true, ++result.border_nodes;
     } else if (surface.is_feature_vertex(int(v))) {
-      fixed[v] = true, ++result.feature_nodes;
+      if (slide_feature_nodes && !fixed[v] && !get(constrained, vertex_of[v]) &&
+          inside_feature_line(surface, int(v), feature_path[v])) {
+        ++result.sliding_nodes;
+      } else {
+        fixed[v] = true, ++result.feature_nodes;
+      }
     } else if (fixed[v] || get(constrained, vertex_of[v])) {
       fixed[v] = true, ++result.constrained_nodes;
     } else {
       ++result.free_nodes;
     }
   }
-  visitor.end_step("cubic surface");
+  visitor.end_step("G1 surface");
 
   std::tie(result.worst_quality_before, result.mean_quality_before) = worst_and_mean_quality(mesh);
   visitor.start_step(optimizer == Node_optimizer::micro_ga ? "micro-GA smoothing"
                                                            : "conjugate-gradient smoothing");
-  Node_smoother<GT> smoother(mesh, surface, fixed, settings, traits);
+  Node_smoother<GT> smoother(mesh, surface, fixed, settings, traits, std::move(feature_path));
   const Node_smoothing_statistics statistics =
       smoother.run([&](double fraction) { return bool(visitor.progress(fraction)); });
   visitor.end_step(optimizer == Node_optimizer::micro_ga ? "micro-GA smoothing"
@@ -190,8 +223,10 @@ Mga_smooth_result smooth_with(PolygonMesh& pm, const NamedParameters& np,
 /// algorithm of Chen, Hsu, Lin (section 3): for each free node and each adjacent element, a
 /// micro-GA over the design variables (r1, r2) of eq. 1-3 maximises the sum of alpha (eq. 4-5,
 /// triangles) and beta (eq. 7-8, quads) of the node's elements, each trial position being mapped
-/// onto a cubic surface rebuilt from the input mesh (section 2.2) or, by default, half-way between
-/// that surface and the input triangles (`cubic_surface_weight`, doc/mga_smooth.md); the best
+/// onto a tangent-plane continuous (G1) surface of quartic Bezier patches rebuilt from the input
+/// mesh and its estimated vertex normals (section 2.2), by default with its boundary curves'
+/// tangents shortened to 0.45 so that it bulges about half as far off the input triangles
+/// (`surface_tangent_scale`, doc/mga_smooth.md); the best
 /// position over the elements is taken if it raises the fitness and folds no element (exact
 /// orientation test).
 /// Trial positions that would lower the node's worst element below min(its current quality, 0.5)
@@ -218,11 +253,20 @@ Mga_smooth_result smooth_with(PolygonMesh& pm, const NamedParameters& np,
 ///   \cgalParamNBegin{feature_angle_deg} \cgalParamDescription{an edge whose dihedral angle is
 ///     below this is a feature edge; its nodes are fixed} \cgalParamType{double}
 ///     \cgalParamDefault{120} \cgalParamNEnd
-///   \cgalParamNBegin{cubic_surface_weight} \cgalParamDescription{where trial positions are
-///     mapped: flat + w (cubic - flat) at the same barycentric coordinates of a primary triangle;
-///     0 = the input triangles, 1 = the cubic surface (the paper's mapping, closest to the smooth
-///     surface the input samples), 0.5 = half-way, within half the input's chordal deviation of
-///     both} \cgalParamType{double in [0, 1]} \cgalParamDefault{0.5} \cgalParamNEnd
+///   \cgalParamNBegin{surface_tangent_scale} \cgalParamDescription{where trial positions are
+///     mapped: the G1 surface whose boundary curves have their end tangents scaled by s (same
+///     directions, so still G1 with the same vertex normals); it lies about s times as far off
+///     the input triangles as the full surface. 0 = the input triangles, 1 = the full Walton-Meek
+///     surface (the paper's mapping onto the smooth surface, closest to the surface the input
+///     samples); the default is as far from the input triangles as from the true surface on the
+///     saddles of doc/mga_smooth.md} \cgalParamType{double in [0, 1]} \cgalParamDefault{0.45}
+///     \cgalParamExtra{`cubic_surface_weight` is its deprecated name (read when
+///     `surface_tangent_scale` is absent).} \cgalParamNEnd
+///   \cgalParamNBegin{slide_feature_nodes} \cgalParamDescription{nodes inside a feature line
+///     (two sharp edges meeting at less than a 30 degree turn) slide along the line's curve, at
+///     most half-way to their neighbours, instead of staying fixed; line ends, joints and corners
+///     stay fixed. Off by default: the paper fixes every feature node}
+///     \cgalParamType{bool} \cgalParamDefault{false} \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_is_constrained_map} \cgalParamDescription{nodes that must not move}
 ///     \cgalParamType{readable vertex property map to bool} \cgalParamDefault{none} \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_threads} \cgalParamDescription{threads (TBB) over independent

@@ -53,7 +53,9 @@ MESH_REPAIR_PARAMETER(boundary_smoothing_iterations)  // shape prediction: eq. 5
 MESH_REPAIR_PARAMETER(use_rough_set_simplification)   // bool, shape prediction 5.3.2
 MESH_REPAIR_PARAMETER(fitness_weights)            // std::array<double,3>: w_a, w_b, w_c of eq. 5.13
 MESH_REPAIR_PARAMETER(curvature_flow_iterations)  // shape prediction: smoothing on the patches
-MESH_REPAIR_PARAMETER(cubic_surface_weight)       // micro-GA: 0 input triangles .. 1 cubic surface
+MESH_REPAIR_PARAMETER(surface_tangent_scale)  // micro-GA: 0 input triangles .. 1 full G1 surface
+MESH_REPAIR_PARAMETER(cubic_surface_weight)   // deprecated name of surface_tangent_scale
+MESH_REPAIR_PARAMETER(slide_feature_nodes)    // micro-GA: nodes inside feature lines slide along
 
 // mesh optimisation (optimize_mesh.h, thesis ch. 7)
 MESH_REPAIR_PARAMETER(optimization_mode)          // Optimization_mode: reduction or quality

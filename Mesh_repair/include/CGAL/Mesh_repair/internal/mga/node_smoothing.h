@@ -5,7 +5,7 @@
 
 // The sweeps of Chen et al. 3.1 (steps 2-9): every free node in turn searches each adjacent
 // element with the micro-GA (or, as the paper's baseline, a conjugate-gradient search in its
-// tangent plane), maps the trial positions onto the cubic surface and moves to the best one when
+// tangent plane), maps the trial positions onto the G1 surface and moves to the best one when
 // it raises the fitness by at least `min_gain` and folds no element (exact orientation test).
 // Sweeps repeat until no node moves.
 //
@@ -13,7 +13,7 @@
 // colour class is processed in parallel (TBB). Each node draws from its own generator, seeded
 // from (seed, node index, sweep): the result is the same for any number of threads.
 
-#include <CGAL/Mesh_repair/internal/c1_surface/cubic_surface.h>
+#include <CGAL/Mesh_repair/internal/c1_surface/g1_surface.h>
 #include <CGAL/Mesh_repair/internal/mga/micro_ga.h>
 #include <CGAL/Mesh_repair/internal/mga/node_star.h>
 
@@ -26,6 +26,7 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -80,9 +81,17 @@ inline std::vector<std::vector<int>> independent_sets(const Polygon_arrays& mesh
 template <class Traits>
 class Node_smoother {
  public:
-  Node_smoother(Polygon_arrays& mesh, const Cubic_surface& surface, const std::vector<bool>& fixed,
-                const Node_smoothing_settings& settings, const Traits& traits)
-      : mesh_(mesh), surface_(surface), fixed_(fixed), settings_(settings), traits_(traits) {
+  /// `feature_path[v]`, when given for a free node v, holds the two vertices of the feature
+  /// line through v: v then slides along that line instead of searching its elements.
+  Node_smoother(Polygon_arrays& mesh, const G1_surface& surface, const std::vector<bool>& fixed,
+                const Node_smoothing_settings& settings, const Traits& traits,
+                std::vector<std::array<int, 2>> feature_path = {})
+      : mesh_(mesh),
+        surface_(surface),
+        fixed_(fixed),
+        settings_(settings),
+        traits_(traits),
+        feature_path_(std::move(feature_path)) {
     host_.resize(mesh.points.size());
     for (std::size_t v = 0; v < host_.size(); ++v)
       host_[v] = v < surface.number_of_vertices() ? surface.triangle_of_vertex(int(v)) : -1;
@@ -178,7 +187,9 @@ class Node_smoother {
     Splitmix64 random(settings_.seed * 0x9E3779B97F4A7C15ull ^ (std::uint64_t(v) << 20) ^
                       std::uint64_t(sweep));
     Vec3 best_position;
-    const double best = settings_.optimizer == Node_optimizer::micro_ga
+    const bool slides = !feature_path_.empty() && feature_path_[v][0] >= 0;
+    const double best = slides ? slide_search(star, random, best_position)
+                        : settings_.optimizer == Node_optimizer::micro_ga
                             ? micro_ga_search(star, random, best_position)
                             : conjugate_gradient_search(star, best_position);
     Move move;
@@ -197,6 +208,25 @@ class Node_smoother {
   Vec3 on_surface(const Vec3& p, int start) const {
     int host = start;
     return surface_.project(p, host);
+  }
+
+  // A node inside a feature line (option `slide_feature_nodes`) moves along the line only: its
+  // position is the point at tau in (-0.5, 0.5) of the path made of the surface's curves from
+  // its own input position toward its two feature neighbours (tau > 0 toward the first), so it
+  // stays on the feature curve and never passes the middle of an input edge (two sliding
+  // neighbours cannot cross). A micro-GA over r1 (tau = r1 - 0.5) finds the best tau; r2 plays
+  // no part.
+  double slide_search(const Node_star& star, Splitmix64& random, Vec3& best_position) const {
+    const int v = star.node();
+    const std::array<int, 2>& path = feature_path_[v];
+    auto at = [&](double tau) {
+      return tau >= 0 ? surface_.edge_point(v, path[0], tau)
+                      : surface_.edge_point(v, path[1], -tau);
+    };
+    const auto result = run_micro_ga([&](double r1, double) { return star.fitness(at(r1 - 0.5)); },
+                                     settings_.ga, random);
+    best_position = at(result[1] - 0.5);
+    return star.fitness(best_position);
   }
 
   // Steps 3-7: one micro-GA per adjacent element; the best over the elements wins.
@@ -286,13 +316,14 @@ class Node_smoother {
   }
 
   Polygon_arrays& mesh_;
-  const Cubic_surface& surface_;
+  const G1_surface& surface_;
   const std::vector<bool>& fixed_;
   Node_smoothing_settings settings_;
   const Traits& traits_;
   std::vector<int> host_;
   std::vector<char> stale_;
   std::vector<std::vector<int>> classes_;
+  std::vector<std::array<int, 2>> feature_path_;  // empty, or {-1, -1} for nodes that do not slide
 #ifdef CGAL_LINKED_WITH_TBB
   std::unique_ptr<tbb::task_arena> arena_;
 #endif

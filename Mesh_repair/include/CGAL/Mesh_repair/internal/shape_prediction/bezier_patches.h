@@ -14,6 +14,8 @@
 
 #include <CGAL/Mesh_repair/internal/cubic_curves.h>
 
+#include <CGAL/Kernel/global_functions.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -33,20 +35,25 @@ class Quartic_triangle_patch {
   using Point_3 = typename Kernel::Point_3;
   using Vector_3 = typename Kernel::Vector_3;
 
+  /// The three boundary cubics of a patch, in the order of the curves: 0 from C to B, 1 from B
+  /// to A, 2 from A to C (corners A = P400 (u), B = P040 (v), C = P004 (w)).
+  using Boundary_cubics = std::array<std::array<Point_3, 4>, 3>;
+
   Quartic_triangle_patch(const std::array<Point_3, 3>& corner,
-                         const std::array<Vector_3, 3>& normal) {
-    // Corners: A = P400 (u), B = P040 (v), C = P004 (w). Curve 0: C -> B, 1: B -> A, 2: A -> C.
-    const Point_3 A = corner[0], B = corner[1], C = corner[2];
+                         const std::array<Vector_3, 3>& normal)
+      : Quartic_triangle_patch(normal, boundary_cubics(corner, normal)) {}
+
+  /// A patch over given boundary cubics: each end tangent must be orthogonal to the normal of
+  /// its corner (as the point-normal cubics are). The interior construction (eq. 5.20-5.29) makes
+  /// the tangent plane along an edge a function of that edge's curve and its two end normals
+  /// only, so patches built from one shared network of such curves (e.g. with shortened end
+  /// tangents, `boundary_cubic`) still meet with a common tangent plane (G1).
+  Quartic_triangle_patch(const std::array<Vector_3, 3>& normal, const Boundary_cubics& cubic) {
     const Vector_3 NA = normal[0], NB = normal[1], NC = normal[2];
-    const std::array<Point_3, 3> start{C, B, A}, end{B, A, C};
     const std::array<Vector_3, 3> n_start{NC, NB, NA}, n_end{NB, NA, NC};
-    std::array<std::array<Point_3, 4>, 3> cubic;
     std::array<std::array<Point_3, 5>, 3> quartic;
-    for (int i = 0; i < 3; ++i) {
-      cubic[i] = boundary_cubic(start[i], n_start[i], end[i], n_end[i]);
-      quartic[i] = elevate(cubic[i]);  // eq. 5.18
-    }
-    for (int j = 0; j <= 4; ++j) {  // eq. 5.19
+    for (int i = 0; i < 3; ++i) quartic[i] = elevate(cubic[i]);  // eq. 5.18
+    for (int j = 0; j <= 4; ++j) {                               // eq. 5.19
       control(0, j, 4 - j) = quartic[0][j];
       control(j, 4 - j, 0) = quartic[1][j];
       control(4 - j, 0, j) = quartic[2][j];
@@ -97,6 +104,9 @@ class Quartic_triangle_patch {
   }
 
   const Point_3& boundary_control(int i, int j) const { return control_[index(i, j)]; }
+  /// G_{curve,1} (k = 0) and G_{curve,2} (k = 1) of eq. 5.20-5.23, the points that `evaluate`
+  /// blends into the three interior control points (eq. 5.27-5.29).
+  const Point_3& interior_control(int curve, int k) const { return g_[curve][k]; }
 
  private:
   static int index(int i, int j) { return i * 5 + j; }  // k = 4 - i - j
@@ -113,14 +123,24 @@ class Quartic_triangle_patch {
     return 24.0 / (factorial[i] * factorial[j] * factorial[k]);
   }
 
-  // Eq. 4.2-4.7 with the chord direction as tangent at both ends (Walton and Meek): the curve of
-  // an edge depends on the edge only, so neighbouring patches share it.
+ public:
+  /// Eq. 4.2-4.7 with the chord direction as tangent at both ends (Walton and Meek): the curve of
+  /// an edge depends on the edge only, so neighbouring patches share it.
   static std::array<Point_3, 4> boundary_cubic(const Point_3& q0, const Vector_3& n0,
                                                const Point_3& q1, const Vector_3& n1) {
     Vector_3 chord = q1 - q0;
     const double length = std::sqrt(CGAL::to_double(chord.squared_length()));
     if (length > 0) chord = chord / length;
     return make_cubic_boundary_curve(q0, n0, chord, q1, n1, chord).control;
+  }
+
+ private:
+  static Boundary_cubics boundary_cubics(const std::array<Point_3, 3>& corner,
+                                         const std::array<Vector_3, 3>& normal) {
+    // Curve 0: C -> B, 1: B -> A, 2: A -> C.
+    return {boundary_cubic(corner[2], normal[2], corner[1], normal[1]),
+            boundary_cubic(corner[1], normal[1], corner[0], normal[0]),
+            boundary_cubic(corner[0], normal[0], corner[2], normal[2])};
   }
 
   static std::array<Point_3, 5> elevate(const std::array<Point_3, 4>& v) {
