@@ -102,18 +102,77 @@ TEST(BezierPatches, SpherePatchStaysCloseToTheSphere) {
   EXPECT_LT(patch_error, 0.1 * flat_error);
 }
 
-TEST(BezierPatches, NetworkMapsPointsOntoThePatchOfTheirTriangle) {
+// Largest distance from the unit circle of the cubic with control points c, sampled.
+double circle_error(const std::array<Point, 4>& c) {
+  double worst = 0;
+  for (int i = 0; i <= 100; ++i) {
+    const double t = i / 100.0, s = 1 - t;
+    const Vector p = s * s * s * (c[0] - CGAL::ORIGIN) + 3 * s * s * t * (c[1] - CGAL::ORIGIN) +
+                     3 * s * t * t * (c[2] - CGAL::ORIGIN) + t * t * t * (c[3] - CGAL::ORIGIN);
+    worst = std::max(worst, std::abs(std::sqrt(p.squared_length()) - 1));
+  }
+  return worst;
+}
+
+TEST(BezierPatches, CircularBoundaryCubicReproducesACircularArc) {
+  for (double half_angle : {20.0, 45.0, 60.0}) {
+    const double a = half_angle * CGAL_PI / 180;
+    // An arc of the unit circle, tilted out of the coordinate planes; normals are radial.
+    const Vector tilt = Vector(0.3, 0.2, 1) / std::sqrt(1.13);
+    const Vector e1 = Vector(1, 0, -0.3) / std::sqrt(1.09);
+    const Vector e2 = CGAL::cross_product(tilt, e1);
+    const Point q0 = CGAL::ORIGIN + (-std::sin(a) * e1 + std::cos(a) * e2);
+    const Point q1 = CGAL::ORIGIN + (std::sin(a) * e1 + std::cos(a) * e2);
+    const Vector n0 = q0 - CGAL::ORIGIN, n1 = q1 - CGAL::ORIGIN;
+    const double walton_meek = circle_error(Patch::boundary_cubic(q0, n0, q1, n1));
+    const auto circular = Patch::circular_boundary_cubic(q0, n0, q1, n1);
+    // The cubic arc's own error (4/3 tan(theta/4) rule): 2.7e-4 for 90 degrees, 1.3e-3 for 120.
+    EXPECT_LT(circle_error(circular), 2e-3) << half_angle;
+    EXPECT_LT(circle_error(circular), 0.5 * walton_meek) << half_angle;
+    // The same curve when the edge is walked the other way (neighbouring patches share it).
+    const auto reversed = Patch::circular_boundary_cubic(q1, n1, q0, n0);
+    for (int k = 0; k < 4; ++k)
+      EXPECT_LT(std::sqrt(CGAL::squared_distance(circular[k], reversed[3 - k])), 1e-14);
+    RecordProperty("walton_meek_error_" + std::to_string(int(half_angle)),
+                   std::to_string(walton_meek));
+  }
+}
+
+TEST(BezierPatches, NetworkMapsPointsAlongTheNormalOfTheirTriangle) {
   const std::vector<Point> points = {on_sphere(0.9, 0.0), on_sphere(1.1, 0.8), on_sphere(0.4, 0.5),
                                      on_sphere(1.5, 0.2)};
   std::vector<Vector> normals;
   for (const Point& p : points) normals.push_back(p - CGAL::ORIGIN);
   const CGAL::Mesh_repair::internal::shape_prediction::Bezier_patch_network<K> network(
       points, normals, {{0, 1, 2}, {1, 0, 3}});
+  // Eq. 5.31 as written: the patch point at the coordinates of the foot, which lies aside of the
+  // triangle's normal line through the point.
   const Point centroid = CGAL::centroid(points[0], points[1], points[2]);
-  const Point mapped = network.map(centroid);
-  EXPECT_LT(std::sqrt(CGAL::squared_distance(mapped, network.patch(0)(1.0 / 3, 1.0 / 3, 1.0 / 3))),
+  const Vector normal = CGAL::normal(points[0], points[1], points[2]);
+  const Point at_foot = network.map_at_foot_coordinates(centroid);
+  EXPECT_LT(std::sqrt(CGAL::squared_distance(at_foot, network.patch(0)(1.0 / 3, 1.0 / 3, 1.0 / 3))),
             1e-12);
+  const auto sine_to_normal = [&normal](const Vector& d) {
+    return std::sqrt(CGAL::cross_product(d, normal).squared_length() /
+                     (d.squared_length() * normal.squared_length()));
+  };
+  EXPECT_GT(sine_to_normal(at_foot - centroid), 1e-3);
+  // `map`: the patch point on that normal line, still on the sphere.
+  const Point mapped = network.map(centroid);
+  EXPECT_LT(sine_to_normal(mapped - centroid), 1e-8);
   EXPECT_LT(std::abs(std::sqrt((mapped - CGAL::ORIGIN).squared_length()) - 1), 0.01);
+  // A point of the network stays where it is, also near the shared edge (0, 1), where the
+  // normal line from the nearest triangle meets the other patch.
+  double moved = 0;
+  for (std::size_t t : {0u, 1u})
+    for (double near_edge : {0.02, 0.1, 0.3})
+      for (double along : {0.2, 0.5, 0.7}) {
+        // Corners 0 and 1 of triangle 0 are points 0 and 1; of triangle 1, points 1 and 0.
+        const double a = (1 - near_edge) * along, b = (1 - near_edge) * (1 - along);
+        const Point on = network.patch(t)(a, b, near_edge);
+        moved = std::max(moved, std::sqrt(CGAL::squared_distance(network.map(on), on)));
+      }
+  EXPECT_LT(moved, 1e-7);
 }
 
 }  // namespace

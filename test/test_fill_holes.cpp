@@ -229,7 +229,7 @@ TEST(AdvancingFrontCore, ClosedFrontIsExactlyCheckedInItsFinalPositions) {
   std::vector<Mesh::Vertex_index> point_vertices;
   MI::Front_input input = MI::front_input_from_border(mesh, mesh.points(), border, point_vertices);
   EXPECT_TRUE(input.context_complete);
-  const MI::Front_size size = MI::border_density(input);
+  const MI::Front_size size = MI::border_density(input, MI::front_spacing_factor);
   const auto onto_sphere = [](const MI::Vec3& p, const MI::Vec3&) { return MI::normalized(p); };
   MI::Front_options options;
   options.smoothing_iterations = 3;
@@ -262,7 +262,7 @@ TEST(AdvancingFrontCore, DeferredThreeDimensionalTestGivesTheSamePatchOrFlagsIt)
   std::vector<Mesh::Vertex_index> point_vertices;
   const MI::Front_input input =
       MI::front_input_from_border(mesh, mesh.points(), border, point_vertices);
-  const MI::Front_size size = MI::border_density(input);
+  const MI::Front_size size = MI::border_density(input, MI::front_spacing_factor);
   const auto onto_sphere = [](const MI::Vec3& p, const MI::Vec3&) { return MI::normalized(p); };
   MI::Front_options options;
   const MI::Front_triangulation checked = MI::advance_front(input, onto_sphere, size, options);

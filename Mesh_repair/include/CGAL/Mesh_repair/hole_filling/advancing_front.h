@@ -103,41 +103,6 @@ Front_projection hole_projection(const PolygonMesh& pm, VertexPointMap vpm,
 /// doc/advancing_front.md, "Patch density".
 constexpr double front_spacing_factor = 1.15;
 
-/// The edge length wanted inside the hole: an inverse-square-distance blend of the border's
-/// edge lengths, times `front_spacing_factor`, so the patch's density matches its surroundings
-/// everywhere (thesis 4.4) without the drift of taking each node's two adjacent front edges,
-/// which shrink layer after layer (see doc/advancing_front.md). The border is summarised by at
-/// most 64 runs of edges.
-inline Front_size border_density(const Front_input& input) {
-  const std::size_t n = input.cycle.size();
-  const std::size_t runs = std::min<std::size_t>(n, 64);
-  auto samples = std::make_shared<std::vector<std::pair<Vec3, double>>>();
-  for (std::size_t r = 0; r < runs; ++r) {
-    const std::size_t begin = r * n / runs, end = (r + 1) * n / runs;
-    Vec3 middle{0, 0, 0};
-    double length = 0;
-    for (std::size_t k = begin; k < end; ++k) {
-      const Vec3& p = input.points[input.cycle[k]];
-      const Vec3& q = input.points[input.cycle[(k + 1) % n]];
-      length += norm(sub(q, p));
-      middle = add(middle, scale(add(p, q), 0.5));
-    }
-    const double count = double(end - begin);
-    samples->emplace_back(scale(middle, 1.0 / count), length / count);
-  }
-  return [samples](const Vec3& at, double adjacent) {
-    double weights = 0, blend = 0;
-    for (const auto& sample : *samples) {
-      const double d2 = dot(sub(at, sample.first), sub(at, sample.first));
-      if (d2 == 0) return front_spacing_factor * sample.second;
-      const double weight = 1.0 / d2;
-      weights += weight;
-      blend += sample.second * weight;
-    }
-    return front_spacing_factor * (weights > 0 ? blend / weights : adjacent);
-  };
-}
-
 /// True when the triangle (a, b, c) has an angle below `limit_deg` (< 90), or a repeated point:
 /// `smallest_angle_deg(a, b, c) < limit_deg` without its three arctangents.
 inline bool has_angle_below(const Vec3& a, const Vec3& b, const Vec3& c, double limit_deg) {
@@ -234,7 +199,7 @@ Hole_fill_report fill_hole_advancing_front(
                                                static_cast<Cache*>(nullptr));
   const internal::Front_input input =
       internal::front_input_from_border(pm, vpm, border_halfedge, point_vertices, shared_cache);
-  const internal::Front_size size = internal::border_density(input);
+  const internal::Front_size size = internal::border_density(input, internal::front_spacing_factor);
 
   // A triangle is degenerate below 2 degrees, or below half the sharpest corner of the border
   // when the border itself forces a sharper one (every triangle at that corner is as sharp).

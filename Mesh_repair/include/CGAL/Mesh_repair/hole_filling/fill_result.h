@@ -74,6 +74,10 @@ struct Hole_fill_report {
   std::size_t vertices_created = 0;
   double seconds = 0;
   std::vector<std::string> notes;  ///< non-fatal remarks on a kept patch (e.g. fairing failed)
+  /// The method tested its patch itself, with exact predicates, in its final position, against
+  /// itself and every face of the mesh its bounding box could meet (as the check of
+  /// `fill_holes` does): the dispatcher does not test it a second time.
+  bool exactly_checked = false;
 };
 
 /// What a `hole_filter` predicate of `fill_holes` sees of a hole before it is filled.

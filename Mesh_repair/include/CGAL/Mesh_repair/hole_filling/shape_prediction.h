@@ -11,6 +11,7 @@
 
 #include <CGAL/Mesh_repair/hole_filling/fill_result.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/advancing_front_core.h>
+#include <CGAL/Mesh_repair/internal/hole_filling/patch_check.h>
 #include <CGAL/Mesh_repair/internal/shape_prediction/front_on_patches.h>
 #include <CGAL/Mesh_repair/internal/shape_prediction/hole_polygon.h>
 #include <CGAL/Mesh_repair/internal/shape_prediction/shape_estimate.h>
@@ -19,6 +20,7 @@
 
 #include <array>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -112,8 +114,13 @@ Hole_fill_report fill_hole_shape_prediction(
   const int flow_iterations =
       choose_parameter(get_parameter(np, internal_np::curvature_flow_iterations_t()), 5);
 
+  // The dispatcher's cache of face boxes (see fill_hole_advancing_front): the front tests its
+  // triangles against the faces near the hole without a pass over the whole mesh.
+  using Cache = internal::Face_box_cache<PolygonMesh, std::decay_t<decltype(vpm)>>;
+  Cache* const face_boxes = choose_parameter(get_parameter(np, internal_np::face_box_cache_t()),
+                                             static_cast<Cache*>(nullptr));
   return internal::shape_prediction::fill_hole<GeomTraits>(pm, vpm, border_halfedge, patch, options,
-                                                           flow_iterations);
+                                                           flow_iterations, face_boxes);
 }
 
 }  // namespace Mesh_repair

@@ -24,6 +24,7 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <initializer_list>
 #include <queue>
 #include <string>
@@ -84,6 +85,16 @@ struct Front_options {
   /// `fill_hole_advancing_front`). Not with `close_remnant`, whose triangulation needs the 3D
   /// test: a stuck front simply fails.
   bool defer_3d_test = false;
+  /// Replaces the tangential relaxation after closing (with `smoothing_iterations` passes):
+  /// moves the new nodes (from index `first_new`) of the closed triangulation. The moved patch is
+  /// tested again like the relaxed one.
+  std::function<void(std::vector<Vec3>& points,
+                     const std::vector<std::array<std::size_t, 3>>& triangles,
+                     std::size_t first_new)>
+      relaxation;
+  /// When the moved patch fails that test, put the nodes back where the front created them
+  /// (where each fan passed its own exact test) instead of leaving the patch unchecked.
+  bool undo_failed_relaxation = false;
 };
 
 /// `points` starts with the input's border points; `triangles` index into it, in creation order
@@ -1061,9 +1072,19 @@ class Advancing_front {
   /// triangles are then tested again (`recheck_patch`), so the patch stays exactly checked.
   void smooth() {
     const bool relax = options_.smoothing_iterations > 0 && points_.size() > border_count_;
-    if (relax) relax_new_nodes();
+    std::vector<Vec3> created;
+    if (relax && options_.undo_failed_relaxation) created = points_;
+    if (relax && options_.relaxation)
+      options_.relaxation(points_, triangles_, border_count_);
+    else if (relax)
+      relax_new_nodes();
     // The fans' 3D test saw the nodes where they were created, or was deferred to here.
-    if ((relax || options_.defer_3d_test) && !recheck_patch()) unchecked_ = true;
+    if (!(relax || options_.defer_3d_test) || recheck_patch()) return;
+    if (relax && options_.undo_failed_relaxation && !options_.defer_3d_test) {
+      points_ = std::move(created);
+      if (recheck_patch()) return;
+    }
+    unchecked_ = true;
   }
 
   void relax_new_nodes() {
@@ -1181,6 +1202,41 @@ class Advancing_front {
   double mean_length_ = 1, cell_ = 1, triangle_cell_ = 1;
   Vec3 hole_normal_{0, 0, 1};
 };
+
+/// The edge length wanted inside the hole: an inverse-square-distance blend of the border's
+/// edge lengths, times `factor` (the front's layers compress: see `front_spacing_factor` in
+/// advancing_front.h), so the patch's density matches its surroundings everywhere (thesis 4.4)
+/// without the drift of taking each node's two adjacent front edges, which shrink layer after
+/// layer (see doc/advancing_front.md). The border is summarised by at most 64 runs of edges.
+inline Front_size border_density(const Front_input& input, double factor) {
+  const std::size_t n = input.cycle.size();
+  const std::size_t runs = std::min<std::size_t>(n, 64);
+  auto samples = std::make_shared<std::vector<std::pair<Vec3, double>>>();
+  for (std::size_t r = 0; r < runs; ++r) {
+    const std::size_t begin = r * n / runs, end = (r + 1) * n / runs;
+    Vec3 middle{0, 0, 0};
+    double length = 0;
+    for (std::size_t k = begin; k < end; ++k) {
+      const Vec3& p = input.points[input.cycle[k]];
+      const Vec3& q = input.points[input.cycle[(k + 1) % n]];
+      length += norm(sub(q, p));
+      middle = add(middle, scale(add(p, q), 0.5));
+    }
+    const double count = double(end - begin);
+    samples->emplace_back(scale(middle, 1.0 / count), length / count);
+  }
+  return [samples, factor](const Vec3& at, double adjacent) {
+    double weights = 0, blend = 0;
+    for (const auto& sample : *samples) {
+      const double d2 = dot(sub(at, sample.first), sub(at, sample.first));
+      if (d2 == 0) return factor * sample.second;
+      const double weight = 1.0 / d2;
+      weights += weight;
+      blend += sample.second * weight;
+    }
+    return factor * (weights > 0 ? blend / weights : adjacent);
+  };
+}
 
 /// Triangulates the region bounded by `input.cycle` with the advancing front.
 inline Front_triangulation advance_front(const Front_input& input, Front_projection project,

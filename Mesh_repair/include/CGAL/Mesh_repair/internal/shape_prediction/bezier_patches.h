@@ -20,6 +20,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <vector>
 
 namespace CGAL {
@@ -134,6 +135,32 @@ class Quartic_triangle_patch {
     return make_cubic_boundary_curve(q0, n0, chord, q1, n1, chord).control;
   }
 
+  /// `boundary_cubic` with each end tangent lengthened so that a circular arc is reproduced:
+  /// Walton and Meek's tangent at an end making the angle alpha with the chord d has the length
+  /// |d| cos(alpha) / (1 + 2 cos^2(alpha)) on a circular arc, where the arc needs
+  /// |d| / (3 cos^2(alpha / 2)) (the classical 4/3 tan(theta / 4) of a cubic arc); at alpha = 60
+  /// degrees the curve bulges only 0.75 times as much as the arc. The factor depends on the end
+  /// only, so the curve is the same when the edge is walked the other way.
+  static std::array<Point_3, 4> circular_boundary_cubic(const Point_3& q0, const Vector_3& n0,
+                                                        const Point_3& q1, const Vector_3& n1) {
+    std::array<Point_3, 4> c = boundary_cubic(q0, n0, q1, n1);
+    const Vector_3 chord = q1 - q0;
+    const auto factor_at = [&chord](const Point_3& end, const Point_3& inner) {
+      const Vector_3 handle = inner - end;
+      const double h2 = CGAL::to_double(handle.squared_length());
+      const double d2 = CGAL::to_double(chord.squared_length());
+      if (!(h2 > 0) || !(d2 > 0)) return 1.0;
+      const double ca = std::abs(CGAL::to_double(handle * chord)) / std::sqrt(h2 * d2);
+      // Bounded: beyond 70 degrees the arc is too steep over its chord to trust the normals.
+      const double cos_alpha = std::max(ca, std::cos(70.0 * CGAL_PI / 180));
+      const double cos_half_squared = 0.5 * (1 + cos_alpha);
+      return (1 + 2 * cos_alpha * cos_alpha) / (3 * cos_alpha * cos_half_squared);
+    };
+    c[1] = c[0] + factor_at(c[0], c[1]) * (c[1] - c[0]);
+    c[2] = c[3] + factor_at(c[3], c[2]) * (c[2] - c[3]);
+    return c;
+  }
+
  private:
   static Boundary_cubics boundary_cubics(const std::array<Point_3, 3>& corner,
                                          const std::array<Vector_3, 3>& normal) {
@@ -221,9 +248,28 @@ class Bezier_patch_network {
     patches_.reserve(triangles.size());
     frames_.reserve(triangles.size());
     for (const auto& t : triangles) {
-      patches_.emplace_back(std::array<Point_3, 3>{points[t[0]], points[t[1]], points[t[2]]},
-                            std::array<Vector_3, 3>{normals[t[0]], normals[t[1]], normals[t[2]]});
+      const std::array<Point_3, 3> corner{points[t[0]], points[t[1]], points[t[2]]};
+      const std::array<Vector_3, 3> normal{normals[t[0]], normals[t[1]], normals[t[2]]};
+      using Patch = Quartic_triangle_patch<Kernel>;
+      // Curve 0: C -> B, 1: B -> A, 2: A -> C (see Quartic_triangle_patch).
+      patches_.emplace_back(
+          normal, typename Patch::Boundary_cubics{
+                      Patch::circular_boundary_cubic(corner[2], normal[2], corner[1], normal[1]),
+                      Patch::circular_boundary_cubic(corner[1], normal[1], corner[0], normal[0]),
+                      Patch::circular_boundary_cubic(corner[0], normal[0], corner[2], normal[2])});
       frames_.push_back(make_frame(points[t[0]], points[t[1]], points[t[2]]));
+    }
+    neighbours_.assign(triangles.size(), {none_, none_, none_});
+    std::map<std::pair<int, int>, std::pair<std::size_t, int>> by_edge;
+    for (std::size_t i = 0; i < triangles.size(); ++i) {
+      for (int k = 0; k < 3; ++k) {
+        int a = triangles[i][(k + 1) % 3], b = triangles[i][(k + 2) % 3];
+        if (a > b) std::swap(a, b);
+        const auto [it, inserted] = by_edge.emplace(std::make_pair(a, b), std::make_pair(i, k));
+        if (inserted) continue;
+        neighbours_[i][k] = it->second.first;
+        neighbours_[it->second.first][it->second.second] = i;
+      }
     }
   }
 
@@ -231,10 +277,28 @@ class Bezier_patch_network {
   const Quartic_triangle_patch<Kernel>& patch(std::size_t i) const { return patches_[i]; }
   const std::array<int, 3>& triangle(std::size_t i) const { return triangles_[i]; }
 
-  /// Eq. 5.31 then 5.17: the normal projection x' of `x` onto the nearest triangle of the
-  /// network, its barycentric coordinates there (clamped into the triangle when x' falls
-  /// outside every triangle), and the patch point with those coordinates.
+  /// Eq. 5.31 then 5.17, on the normal line of x: the normal projection x' of `x` onto the
+  /// nearest triangle of the network, then the point of the patches whose own normal projection
+  /// is x' (the patch point on the line through x along the triangle's normal). Eq. 5.31 as
+  /// written evaluates the patch at x''s barycentric coordinates; a Walton-Meek patch is not a
+  /// height field in its own parametrisation (its points shift sideways where it stands steeply
+  /// over its flat triangle), and on a deep cap that put the front's new nodes a median 1.5 edge
+  /// lengths aside of where the front rules placed them (doc/shape_prediction.md, "Normal-line
+  /// mapping"). When no such point is found (a patch folding over its triangle, or the line
+  /// leaving the network), eq. 5.31's point is returned.
   Point_3 map(const Point_3& x) const {
+    std::size_t best = 0;
+    std::array<double, 3> bary{1.0 / 3, 1.0 / 3, 1.0 / 3};
+    locate(x, best, bary);
+    const double p[3] = {CGAL::to_double(x.x()), CGAL::to_double(x.y()), CGAL::to_double(x.z())};
+    double out[3];
+    if (on_normal_line(best, p, bary, out)) return Point_3(out[0], out[1], out[2]);
+    return patches_[best](bary[0], bary[1], bary[2]);
+  }
+
+  /// Eq. 5.31 as written: the patch point at the barycentric coordinates of x's normal
+  /// projection onto the nearest triangle.
+  Point_3 map_at_foot_coordinates(const Point_3& x) const {
     std::size_t best = 0;
     std::array<double, 3> bary{1.0 / 3, 1.0 / 3, 1.0 / 3};
     locate(x, best, bary);
@@ -392,8 +456,81 @@ class Bezier_patch_network {
     return d;
   }
 
+  // Newton steps on patch t's coordinates (v, w) towards the patch point whose normal projection
+  // onto t's plane has the coordinates of x's, each step cut where it would leave the triangle
+  // (a quartic is meaningless outside its triangle); a step that cannot move without leaving
+  // continues on the neighbour across that edge (at most `max_hops`). True, with the point in
+  // `out`, when the steps converge.
+  bool on_normal_line(std::size_t t, const double* x, std::array<double, 3> start,
+                      double* out) const {
+    constexpr int max_hops = 16, max_steps = 12;
+    double v = start[1], w = start[2];
+    for (int hop = 0; hop <= max_hops; ++hop) {
+      const Frame& f = frames_[t];
+      const Quartic_triangle_patch<Kernel>& patch = patches_[t];
+      double xv, xw;
+      plane_coordinates(f, x, xv, xw);
+      int leave = -1;  // the corner opposite the edge a blocked step points across
+      for (int step = 0; step < max_steps && leave < 0; ++step) {
+        double s[3], sv[3], sw[3];
+        const double h = v + w + 1e-6 <= 1 ? 1e-6 : -1e-6;  // differences into the triangle
+        patch.evaluate(1 - v - w, v, w, s);
+        patch.evaluate(1 - v - w - h, v + h, w, sv);
+        patch.evaluate(1 - v - w - h, v, w + h, sw);
+        double s0, s1, a0, a1, b0, b1;
+        plane_coordinates(f, s, s0, s1);
+        plane_coordinates(f, sv, a0, a1);
+        plane_coordinates(f, sw, b0, b1);
+        const double j00 = (a0 - s0) / h, j10 = (a1 - s1) / h, j01 = (b0 - s0) / h,
+                     j11 = (b1 - s1) / h;
+        const double r0 = s0 - xv, r1 = s1 - xw, det = j00 * j11 - j01 * j10;
+        if (!(std::abs(det) > 1e-12)) return false;  // the patch folds over its triangle here
+        const double dv = -(j11 * r0 - j01 * r1) / det, dw = -(j00 * r1 - j10 * r0) / det;
+        if (std::abs(dv) + std::abs(dw) < 1e-10) {
+          patch.evaluate(1 - v - w, v, w, out);
+          return true;
+        }
+        // The largest fraction of the step that stays in the triangle, and the edge that cuts it.
+        double fraction = 1;
+        const double coordinate[3] = {1 - v - w, v, w}, change[3] = {-dv - dw, dv, dw};
+        for (int k = 0; k < 3; ++k) {
+          if (change[k] < 0 && coordinate[k] + fraction * change[k] < 0) {
+            fraction = std::max(0.0, coordinate[k] / -change[k]);
+            leave = k;
+          }
+        }
+        v += fraction * dv;
+        w += fraction * dw;
+        if (fraction > 1e-9) leave = -1;  // moved: try the next step from the edge
+      }
+      if (leave < 0) return false;  // no convergence inside this patch
+      const std::size_t next = neighbours_[t][leave];
+      if (next == none_) return false;  // the solution lies outside the network
+      double edge_point[3];
+      patch.evaluate(std::max(0.0, 1 - v - w), std::max(0.0, v), std::max(0.0, w), edge_point);
+      std::array<double, 3> nb;
+      projected_distance(frames_[next], edge_point, nb);
+      t = next;
+      v = nb[1];
+      w = nb[2];
+    }
+    return false;
+  }
+
+  // Coordinates (v, w) of the normal projection of x onto the plane of f (unclamped).
+  static void plane_coordinates(const Frame& f, const double* x, double& v, double& w) {
+    const double ax[3] = {x[0] - f.a[0], x[1] - f.a[1], x[2] - f.a[2]};
+    const double d20 = ax[0] * f.ab[0] + ax[1] * f.ab[1] + ax[2] * f.ab[2];
+    const double d21 = ax[0] * f.ac[0] + ax[1] * f.ac[1] + ax[2] * f.ac[2];
+    v = (f.d11 * d20 - f.d01 * d21) / f.det;
+    w = (f.d00 * d21 - f.d01 * d20) / f.det;
+  }
+
   std::vector<Point_3> points_;
   std::vector<std::array<int, 3>> triangles_;
+  static constexpr std::size_t none_ = std::size_t(-1);
+  // Per triangle, per corner k: the triangle across the edge opposite corner k, or none_.
+  std::vector<std::array<std::size_t, 3>> neighbours_;
   std::vector<Quartic_triangle_patch<Kernel>> patches_;
   std::vector<Frame> frames_;
 };

@@ -5,10 +5,11 @@
 
 // Thesis 5.6: the shared advancing front (internal/hole_filling/advancing_front_core.h) run with
 // the Bezier patch network as its projection: every new node is located on the network by its
-// normal projection and barycentric coordinates (eq. 5.31) and moved to the patch point
-// (eq. 5.17); the edge length is the mean of the two front edges at the node (eq. 5.32-5.33),
-// so the density follows the surrounding mesh; nodes closer than a quarter edge are merged; the
-// closing relaxation (umbrella flow) maps every move back onto the patches.
+// normal projection (eq. 5.31) and moved to the patch point on that normal line
+// (`Bezier_patch_network::map`); the edge length follows the border's edges, so the density is
+// that of the surrounding mesh (eq. 5.32-5.33 take the two front edges at the node, which
+// shrink layer after layer); close nodes are merged; the closing relaxation (umbrella flow)
+// maps every move back onto the patches and is tested exactly like the front's fans.
 
 #include <CGAL/Mesh_repair/hole_filling/fill_result.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/advancing_front_core.h>
@@ -45,13 +46,14 @@ Vec3 as_vec3(const Point& p) {
 /// not decrease (a "smart" Laplacian: the flow can only improve the worst triangle around each
 /// node, and the patch's smallest angle never decreases).
 template <class Project>
-void guided_curvature_flow(Front_triangulation& front, const Project& onto_patches,
-                           int iterations) {
-  const std::size_t count = front.points.size(), first = front.border_points;
+void guided_curvature_flow(std::vector<Vec3>& points,
+                           const std::vector<std::array<std::size_t, 3>>& triangles,
+                           std::size_t first, const Project& onto_patches, int iterations) {
+  const std::size_t count = points.size();
   if (iterations <= 0 || count == first) return;
   std::vector<std::vector<std::size_t>> neighbours(count - first), around(count - first);
-  for (std::size_t t = 0; t < front.triangles.size(); ++t) {
-    const auto& tri = front.triangles[t];
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    const auto& tri = triangles[t];
     for (int k = 0; k < 3; ++k) {
       if (tri[k] < first) continue;
       around[tri[k] - first].push_back(t);
@@ -62,17 +64,17 @@ void guided_curvature_flow(Front_triangulation& front, const Project& onto_patch
     }
   }
   auto unit_normal = [&](std::size_t t) {
-    const auto& tri = front.triangles[t];
-    const Vec3& a = front.points[tri[0]];
-    return normalized(cross(sub(front.points[tri[1]], a), sub(front.points[tri[2]], a)));
+    const auto& tri = triangles[t];
+    const Vec3& a = points[tri[0]];
+    return normalized(cross(sub(points[tri[1]], a), sub(points[tri[2]], a)));
   };
   // 1 - cos of the triangle's smallest angle (increasing with that angle).
   auto smallest_angle_measure = [&](std::size_t t) {
-    const auto& tri = front.triangles[t];
+    const auto& tri = triangles[t];
     double worst = 2;
     for (int k = 0; k < 3; ++k) {
-      const Vec3 e1 = normalized(sub(front.points[tri[(k + 1) % 3]], front.points[tri[k]]));
-      const Vec3 e2 = normalized(sub(front.points[tri[(k + 2) % 3]], front.points[tri[k]]));
+      const Vec3 e1 = normalized(sub(points[tri[(k + 1) % 3]], points[tri[k]]));
+      const Vec3 e2 = normalized(sub(points[tri[(k + 2) % 3]], points[tri[k]]));
       worst = std::min(worst, 1 - dot(e1, e2));
     }
     return worst;
@@ -85,16 +87,16 @@ void guided_curvature_flow(Front_triangulation& front, const Project& onto_patch
       const auto& list = neighbours[p - first];
       if (list.empty()) continue;
       Vec3 centroid{0, 0, 0};
-      for (std::size_t q : list) centroid = add(centroid, front.points[q]);
+      for (std::size_t q : list) centroid = add(centroid, points[q]);
       centroid = scale(centroid, 1.0 / double(list.size()));
-      const Vec3 old = front.points[p];
+      const Vec3 old = points[p];
       before.clear();
       double quality_before = 2;
       for (std::size_t t : around[p - first]) {
         before.push_back(unit_normal(t));
         quality_before = std::min(quality_before, smallest_angle_measure(t));
       }
-      front.points[p] = onto_patches(scale(add(old, centroid), 0.5), hints[p - first]);
+      points[p] = onto_patches(scale(add(old, centroid), 0.5), hints[p - first]);
       double quality_after = 2;
       bool keep = true;
       for (std::size_t k = 0; k < before.size() && keep; ++k) {
@@ -102,57 +104,69 @@ void guided_curvature_flow(Front_triangulation& front, const Project& onto_patch
         quality_after = std::min(quality_after, smallest_angle_measure(t));
         keep = dot(before[k], unit_normal(t)) >= 0.5;
       }
-      if (!keep || quality_after < quality_before) front.points[p] = old;
+      if (!keep || quality_after < quality_before) points[p] = old;
     }
   }
 }
 
+/// `guided_curvature_flow` on a closed front.
+template <class Project>
+void guided_curvature_flow(Front_triangulation& front, const Project& onto_patches,
+                           int iterations) {
+  guided_curvature_flow(front.points, front.triangles, front.border_points, onto_patches,
+                        iterations);
+}
+
 /// The front's layers compress (as in fill_hole_advancing_front, doc/advancing_front.md,
-/// "Patch density"): asked for the border's mean edge, the patches of the 126 holes of the
-/// "Hole filling I" table had a median 1.06 faces per face removed. Asking for 1.08 times it
-/// gives 1.00, the density of the surroundings, with a lower median Einf (0.00607 against
-/// 0.00624) in 0.80 of the time; 1.15 (the flat front's factor) gave 0.77, too coarse
-/// (doc/shape_prediction.md, "Patch density").
+/// "Patch density"). Asking for 1.08 times the border's edge lengths gives 1.00 faces per face
+/// removed on the 126 holes of the "Hole filling I" table, the density of the surroundings;
+/// 1.15 (the flat front's factor) gave 0.96 with a higher median Einf (0.00661 against
+/// 0.00625; doc/shape_prediction.md, "Normal-line mapping").
 constexpr double patch_front_spacing_factor = 1.08;
 
 /// The advancing front over the patch network of `estimate`, then the guided flow. The edge
-/// length is eq. 5.32-5.33's times `size_factor`; `close_remnant` closes the loops of a stuck
-/// front with the front's checked minimum-area triangulation.
+/// length is the border's (`border_density`) times `size_factor`; `close_remnant` closes the
+/// loops of a stuck front with the front's checked minimum-area triangulation.
 template <class Kernel>
 Front_triangulation mesh_on_patches(const Shape_estimate<Kernel>& estimate,
-                                    const Front_input& input, double mean_length,
-                                    int flow_iterations, double size_factor = 1.0,
-                                    bool close_remnant = false) {
+                                    const Front_input& input, int flow_iterations,
+                                    double size_factor = 1.0, bool close_remnant = false) {
   using Point_3 = typename Kernel::Point_3;
   const Bezier_patch_network<Kernel>& network = *estimate.patches;
-  // New nodes of the front: eq. 5.31 then 5.17 (`map`).
+  // New nodes of the front: eq. 5.31, then the patch point on the normal line (`map`).
   Front_projection onto_patches = [&network](const Vec3& p, const Vec3&) {
     return as_vec3(network.map(Point_3(p[0], p[1], p[2])));
   };
-  // Eq. 5.32-5.33: the mean of the two front edges at the node, bounded as in advancing_front
-  // so that the density stays that of the surrounding mesh.
-  Front_size front_edges_mean = [mean_length, size_factor](const Vec3&, double adjacent) {
-    return patch_front_spacing_factor * size_factor *
-           std::clamp(adjacent, 0.5 * mean_length, 2.0 * mean_length);
-  };
+  // Eq. 5.32-5.33 take the mean of the two front edges at the node; those shrink layer after
+  // layer on a closing front, so the size follows the border's edge lengths instead, as in
+  // fill_hole_advancing_front (doc/shape_prediction.md, "Normal-line mapping").
+  const Front_size size = border_density(input, patch_front_spacing_factor * size_factor);
   Front_options front_options;
   // Thesis 5.6 step 4 merges within a quarter edge; with the shared front that lets facing
   // fronts pass each other without merging (the sphere of Fig. 5.15 does not close), so the
   // front's own half edge is kept.
   front_options.merge_factor = 0.5;
-  front_options.smoothing_iterations = 0;  // the guided flow below replaces it
-  front_options.close_remnant = close_remnant;
-  Front_triangulation front = advance_front(input, onto_patches, front_edges_mean, front_options);
-  if (front.closed)
-    // Foot points on the patches: `map` would move a node that is already on them (by the
-    // difference between a patch and its flat triangle's parametrisation) and the nodes would
-    // drift a little at every pass.
+  // Thesis 5.6 step 8 as the front's relaxation, so that the front tests the smoothed patch
+  // again (exactly, against itself and the mesh around the hole) and puts the nodes back where
+  // it created them if the flow made two triangles meet: the patch stays exactly checked.
+  // Foot points on the patches (`project`, warm-started per node) rather than `map`: a move
+  // goes to the nearest point of the patches, not along the normal of a flat triangle.
+  front_options.smoothing_iterations = flow_iterations;
+  front_options.relaxation = [&network, flow_iterations](
+                                 std::vector<Vec3>& points,
+                                 const std::vector<std::array<std::size_t, 3>>& triangles,
+                                 std::size_t first_new) {
     guided_curvature_flow(
-        front,
+        points, triangles, first_new,
         [&network](const Vec3& p, std::size_t& hint) {
           return as_vec3(network.project(Point_3(p[0], p[1], p[2]), hint));
         },
         flow_iterations);
+  };
+  front_options.undo_failed_relaxation = true;
+  front_options.close_remnant = close_remnant;
+  front_options.size_from_position_only = true;
+  Front_triangulation front = advance_front(input, onto_patches, size, front_options);
   return front;
 }
 
@@ -168,17 +182,16 @@ std::string describe_estimate(const Shape_estimate<Kernel>& estimate, std::size_
 /// The whole method on one hole (see hole_filling/shape_prediction.h). When the front does not
 /// close over the patches of the simplified estimate, the estimate is rebuilt from every border
 /// node (the simplified polygon's long chords can make thin patches) and the front runs again.
-template <class Kernel, class PolygonMesh, class VertexPointMap>
+template <class Kernel, class PolygonMesh, class VertexPointMap, class FaceBoxCache>
 Hole_fill_report fill_hole(PolygonMesh& pm, VertexPointMap vpm,
                            typename boost::graph_traits<PolygonMesh>::halfedge_descriptor h,
                            Fill_patch<PolygonMesh>& patch, const Shape_estimate_options& options,
-                           int flow_iterations) {
+                           int flow_iterations, FaceBoxCache* face_boxes) {
   Hole_fill_report report;
   report.requested = report.used = Fill_method::shape_prediction;
   std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor> border, point_vertices;
   const Hole_polygon<Kernel> hole = read_hole_polygon<Kernel>(h, pm, vpm, border);
-  const Front_input input = front_input_from_border(pm, vpm, h, point_vertices);
-  const double mean_length = cycle_geometry(h, pm, vpm).mean_edge_length;
+  const Front_input input = front_input_from_border(pm, vpm, h, point_vertices, face_boxes);
 
   Shape_estimate_options attempt = options;
   Front_triangulation front;
@@ -190,7 +203,7 @@ Hole_fill_report fill_hole(PolygonMesh& pm, VertexPointMap vpm,
       return report;
     }
     report.notes.push_back(describe_estimate(*estimate, hole.points.size()));
-    front = mesh_on_patches(*estimate, input, mean_length, flow_iterations);
+    front = mesh_on_patches(*estimate, input, flow_iterations);
     if (front.closed || !attempt.simplify) break;
     report.notes.push_back("front on the simplified estimate failed (" + front.failure +
                            "); estimate rebuilt from every border node");
@@ -206,7 +219,7 @@ Hole_fill_report fill_hole(PolygonMesh& pm, VertexPointMap vpm,
     };
     const std::string first_failure = front.failure;
     for (const Retry& r : {Retry{0.7, false}, Retry{1.4, false}, Retry{1.0, true}}) {
-      front = mesh_on_patches(*estimate, input, mean_length, flow_iterations, r.factor, r.remnant);
+      front = mesh_on_patches(*estimate, input, flow_iterations, r.factor, r.remnant);
       if (front.closed) {
         report.notes.push_back("front on the patches stuck (" + first_failure + "); closed " +
                                (r.remnant ? std::string("with its last loops triangulated")
@@ -224,6 +237,7 @@ Hole_fill_report fill_hole(PolygonMesh& pm, VertexPointMap vpm,
     return report;
   }
   report.filled = true;
+  report.exactly_checked = front.exactly_checked;
   report.faces_created = patch.faces.size();
   report.vertices_created = patch.vertices.size();
   return report;
