@@ -3,10 +3,14 @@
 // Quartic triangular Bezier patches of Walton and Meek (thesis 5.5).
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Mesh_repair/internal/shape_prediction/bezier_patches.h>
+#include <CGAL/Mesh_repair/internal/shape_prediction/box_hierarchy.h>
+#include <CGAL/Random.h>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
+#include <vector>
 
 namespace {
 
@@ -173,6 +177,58 @@ TEST(BezierPatches, NetworkMapsPointsAlongTheNormalOfTheirTriangle) {
         moved = std::max(moved, std::sqrt(CGAL::squared_distance(network.map(on), on)));
       }
   EXPECT_LT(moved, 1e-7);
+}
+
+// The hierarchy must return what a linear scan returns (the first of equal distances), or the
+// fronts on the patches would change: random triangles of very different sizes (long GA chords
+// beside small ones), points near and far, and exact ties (two copies of a triangle, and points
+// on a shared corner).
+TEST(BoxHierarchy, NearestItemIsTheLinearScansIncludingTies) {
+  using CGAL::Mesh_repair::internal::shape_prediction::Box_hierarchy;
+  CGAL::Random random(11);
+  std::vector<std::array<Point, 3>> triangles;
+  for (int k = 0; k < 300; ++k) {
+    const Point a(random.get_double(-1, 1), random.get_double(-1, 1), random.get_double(-1, 1));
+    const double size = k % 10 == 0 ? 1.0 : 0.05;
+    auto near_a = [&] {
+      return a + Vector(random.get_double(-size, size), random.get_double(-size, size),
+                        random.get_double(-size, size));
+    };
+    triangles.push_back({a, near_a(), near_a()});
+  }
+  triangles.push_back(triangles[17]);  // an exact tie with item 17, found second by the scan
+  triangles.push_back({triangles[5][0], triangles[40][1], triangles[90][2]});  // shares corners
+  std::vector<Box_hierarchy::Box> boxes;
+  for (const auto& t : triangles) {
+    Box_hierarchy::Box box;
+    for (int d = 0; d < 3; ++d) {
+      box[d] = std::min({t[0][d], t[1][d], t[2][d]});
+      box[d + 3] = std::max({t[0][d], t[1][d], t[2][d]});
+    }
+    boxes.push_back(box);
+  }
+  const Box_hierarchy hierarchy(boxes);
+  std::vector<Point> queries{triangles[17][0], triangles[5][0],
+                             CGAL::centroid(triangles[17][0], triangles[17][1], triangles[17][2])};
+  for (int k = 0; k < 2000; ++k)
+    queries.emplace_back(random.get_double(-2, 2), random.get_double(-2, 2),
+                         random.get_double(-2, 2));
+  for (const Point& q : queries) {
+    const auto distance = [&](std::size_t i) {
+      return CGAL::to_double(CGAL::squared_distance(
+          q, K::Triangle_3(triangles[i][0], triangles[i][1], triangles[i][2])));
+    };
+    std::size_t scan = 0;
+    double scan_distance = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < triangles.size(); ++i) {
+      if (distance(i) < scan_distance) scan_distance = distance(i), scan = i;
+    }
+    const double p[3] = {q.x(), q.y(), q.z()};
+    double found_distance = -1;
+    const std::size_t found = hierarchy.nearest(p, distance, found_distance);
+    EXPECT_EQ(found, scan);
+    EXPECT_EQ(found_distance, scan_distance);
+  }
 }
 
 }  // namespace

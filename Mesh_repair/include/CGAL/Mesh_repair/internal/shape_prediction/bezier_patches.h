@@ -13,6 +13,7 @@
 // the patch with the same barycentric coordinates (eq. 5.17).
 
 #include <CGAL/Mesh_repair/internal/cubic_curves.h>
+#include <CGAL/Mesh_repair/internal/shape_prediction/box_hierarchy.h>
 
 #include <CGAL/Kernel/global_functions.h>
 
@@ -244,7 +245,7 @@ class Bezier_patch_network {
 
   Bezier_patch_network(const std::vector<Point_3>& points, const std::vector<Vector_3>& normals,
                        const std::vector<std::array<int, 3>>& triangles)
-      : points_(points), triangles_(triangles) {
+      : points_(points), triangles_(triangles), hierarchy_(std::vector<Box_hierarchy::Box>()) {
     patches_.reserve(triangles.size());
     frames_.reserve(triangles.size());
     for (const auto& t : triangles) {
@@ -259,6 +260,7 @@ class Bezier_patch_network {
                       Patch::circular_boundary_cubic(corner[0], normal[0], corner[2], normal[2])});
       frames_.push_back(make_frame(points[t[0]], points[t[1]], points[t[2]]));
     }
+    hierarchy_ = frame_boxes(frames_);
     neighbours_.assign(triangles.size(), {none_, none_, none_});
     std::map<std::pair<int, int>, std::pair<std::size_t, int>> by_edge;
     for (std::size_t i = 0; i < triangles.size(); ++i) {
@@ -380,31 +382,23 @@ class Bezier_patch_network {
   }
 
   // Eq. 5.31: the triangle nearest to `x` and the barycentric coordinates of x's closest point
-  // on it (its normal projection when that falls inside).
+  // on it (its normal projection when that falls inside). Through the box hierarchy, with the
+  // lowest index among equal distances (the answer of a linear scan); left unchanged (the
+  // caller's triangle and centroid) when no triangle has a finite distance (all degenerate).
   void locate(const Point_3& x, std::size_t& best, std::array<double, 3>& best_bary) const {
     const double p[3] = {CGAL::to_double(x.x()), CGAL::to_double(x.y()), CGAL::to_double(x.z())};
-    double best_distance = std::numeric_limits<double>::infinity();
-    for (std::size_t t = 0; t < frames_.size(); ++t) {
-      const Frame& f = frames_[t];
-      // The closest point lies in the triangle, within `radius` of its centroid: skip the
-      // triangles that cannot be nearer than the best so far.
-      const double to_centre = std::sqrt(squared(p[0] - f.centre[0]) + squared(p[1] - f.centre[1]) +
-                                         squared(p[2] - f.centre[2]));
-      if (to_centre > f.radius && squared(to_centre - f.radius) > best_distance) continue;
-      std::array<double, 3> bary{1.0 / 3, 1.0 / 3, 1.0 / 3};
-      const double d = projected_distance(f, p, bary);
-      if (d < best_distance) {
-        best_distance = d;
-        best = t;
-        best_bary = bary;
-      }
-    }
+    double best_distance;
+    std::array<double, 3> bary;
+    const std::size_t t = hierarchy_.nearest(
+        p, [&](std::size_t k) { return projected_distance(frames_[k], p, bary); }, best_distance);
+    if (t == hierarchy_.size()) return;
+    best = t;
+    projected_distance(frames_[t], p, best_bary);
   }
 
-  // A triangle of the network in doubles: corner a, edges ab and ac, their Gram matrix, and a
-  // bounding sphere.
+  // A triangle of the network in doubles: corner a, edges ab and ac, their Gram matrix.
   struct Frame {
-    double a[3], ab[3], ac[3], d00, d01, d11, det, centre[3], radius;
+    double a[3], ab[3], ac[3], d00, d01, d11, det;
   };
   static double squared(double x) { return x * x; }
 
@@ -417,18 +411,27 @@ class Bezier_patch_network {
       f.a[k] = a[k];
       f.ab[k] = b[k] - a[k];
       f.ac[k] = c[k] - a[k];
-      f.centre[k] = (a[k] + b[k] + c[k]) / 3;
     }
     f.d00 = f.ab[0] * f.ab[0] + f.ab[1] * f.ab[1] + f.ab[2] * f.ab[2];
     f.d01 = f.ab[0] * f.ac[0] + f.ab[1] * f.ac[1] + f.ab[2] * f.ac[2];
     f.d11 = f.ac[0] * f.ac[0] + f.ac[1] * f.ac[1] + f.ac[2] * f.ac[2];
     f.det = f.d00 * f.d11 - f.d01 * f.d01;
-    f.radius = 0;
-    for (const double* q : {a, b, c})
-      f.radius =
-          std::max(f.radius, std::sqrt(squared(q[0] - f.centre[0]) + squared(q[1] - f.centre[1]) +
-                                       squared(q[2] - f.centre[2])));
     return f;
+  }
+
+  static Box_hierarchy frame_boxes(const std::vector<Frame>& frames) {
+    std::vector<Box_hierarchy::Box> boxes;
+    boxes.reserve(frames.size());
+    for (const Frame& f : frames) {
+      Box_hierarchy::Box box;
+      for (int d = 0; d < 3; ++d) {
+        const double a = f.a[d], b = a + f.ab[d], c = a + f.ac[d];
+        box[d] = std::min({a, b, c});
+        box[d + 3] = std::max({a, b, c});
+      }
+      boxes.push_back(box);
+    }
+    return Box_hierarchy(std::move(boxes));
   }
 
   // Squared distance from x to its closest point on triangle t, with that point's barycentric
@@ -533,6 +536,7 @@ class Bezier_patch_network {
   std::vector<std::array<std::size_t, 3>> neighbours_;
   std::vector<Quartic_triangle_patch<Kernel>> patches_;
   std::vector<Frame> frames_;
+  Box_hierarchy hierarchy_;
 };
 
 }  // namespace shape_prediction
