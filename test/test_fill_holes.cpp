@@ -481,6 +481,26 @@ TEST(FillHoles, AutomaticRecordsTheFallbackWhenTheFrontFails) {
   EXPECT_TRUE(CGAL::is_valid_polygon_mesh(sheet));
 }
 
+TEST(FillHoles, ShapePredictionFallsBackToLiepaThenTheFrontAndTimesEachAttempt) {
+  Mesh sheet;
+  MR::make_height_field<Mesh, Point>(sheet, 0, 1, 0, 1, 6, 6, [](double, double) { return 0.0; });
+  const MR::Fill_result result =
+      MR::fill_holes(sheet, MR::parameters::fill_method(MR::Fill_method::shape_prediction));
+  ASSERT_EQ(result.holes.size(), 1u);
+  const auto& fallbacks = result.holes[0].fallbacks;
+  // Every method is rejected (see above), in the order of `shape_prediction_sequence`, each
+  // listed with the time it took.
+  ASSERT_EQ(fallbacks.size(), 4u);
+  const char* order[] = {"shape_prediction (", "liepa (", "advancing_front (", "liepa (C0) ("};
+  for (std::size_t k = 0; k < 4; ++k) {
+    EXPECT_EQ(fallbacks[k].rfind(order[k], 0), 0u) << fallbacks[k];
+    EXPECT_NE(fallbacks[k].find(" s): "), std::string::npos) << fallbacks[k];
+  }
+  EXPECT_FALSE(result.holes[0].filled);
+  EXPECT_EQ(count_border_cycles(sheet), 1u);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(sheet));
+}
+
 void expect_demo_mesh_filled(const std::string& name) {
   const fs::path path = fs::path(MESH_REPAIR_DEMO_DATA_DIR) / name;
   if (!fs::exists(path)) GTEST_SKIP() << path << " absent (scripts/fetch_demo_data.sh)";

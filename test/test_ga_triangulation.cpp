@@ -138,6 +138,36 @@ TEST(GaTriangulation, ResultIsAValidTriangulationNeverWorseThanItsSeed) {
       r.seed_fitness);
 }
 
+TEST(GaTriangulation, StallCountsOnlyImprovementsOfAtLeastTheStallImprovement) {
+  std::vector<Point> points;
+  std::vector<Vector> outside;
+  saddle_polygon(40, 0.8, points, outside);
+  const ga::Chord_table table = ga::valid_chords<K>(points);
+  ga::Ga_options options;
+  options.target_fitness = 1.0;  // never reached
+  options.max_generations = 300;
+  options.stall_generations = 8;
+  options.random_seed = 3;
+  const ga::Ga_result every =
+      ga::ga_triangulate<K>(points, outside, table, ga::Smoothness_fitness(), options);
+  // No improvement can exceed the whole fitness range: the run stops after exactly the stall
+  // count, and the stall rule is the only thing that changed.
+  options.stall_improvement = 1.0;
+  const ga::Ga_result none =
+      ga::ga_triangulate<K>(points, outside, table, ga::Smoothness_fitness(), options);
+  EXPECT_EQ(none.generations, options.stall_generations);
+  EXPECT_GT(every.generations, none.generations);
+  EXPECT_GE(none.fitness, none.seed_fitness);  // elitism still keeps the best
+  expect_triangulation(40, none.triangles);
+  // A threshold between the two stops in between, and keeps the best triangulation it saw.
+  options.stall_improvement = 0.002;
+  const ga::Ga_result some =
+      ga::ga_triangulate<K>(points, outside, table, ga::Smoothness_fitness(), options);
+  EXPECT_GE(some.generations, none.generations);
+  EXPECT_LE(some.generations, every.generations);
+  EXPECT_GE(some.fitness, none.fitness);
+}
+
 TEST(GaTriangulation, SameSeedGivesTheSameTriangulation) {
   std::vector<Point> points;
   std::vector<Vector> outside;

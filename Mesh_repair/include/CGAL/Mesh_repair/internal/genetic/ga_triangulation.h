@@ -133,6 +133,10 @@ struct Ga_options {
   /// Not in the thesis: on holes whose seed is far below the target the GA otherwise runs all
   /// 500 generations for a gain of a few thousandths (see doc/shape_prediction.md).
   int stall_generations = 60;
+  /// An improvement of the best fitness by less than this does not restart the stall count
+  /// (0: every improvement does). On folded holes the best fitness creeps up by thousandths
+  /// for dozens of generations; see doc/shape_prediction.md, "GA stall".
+  double stall_improvement = 0;
 };
 
 struct Ga_result {
@@ -586,6 +590,7 @@ class Ga_engine {
     }
     Individual best = best_of(population);
     int generation = 0, last_improvement = 0;
+    double stall_reference = best.fitness;  // the best fitness when the stall count restarted
     while (generation < options_.max_generations && best.fitness < options_.target_fitness &&
            !table_.chords.empty() &&
            (options_.stall_generations <= 0 ||
@@ -607,7 +612,10 @@ class Ga_engine {
       ++generation;
       if (candidate.fitness > best.fitness) {
         best = candidate;
-        last_improvement = generation;
+        if (best.fitness > stall_reference + options_.stall_improvement) {
+          last_improvement = generation;
+          stall_reference = best.fitness;
+        }
       }
     }
     result.triangles = best.triangles;

@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -196,14 +197,33 @@ Hole_fill_report fill_hole(PolygonMesh& pm, VertexPointMap vpm,
   Shape_estimate_options attempt = options;
   Front_triangulation front;
   std::optional<Shape_estimate<Kernel>> estimate;
+  // Where the time goes, for the report: estimates (GA and patches) and fronts on the patches.
+  using Clock = std::chrono::steady_clock;
+  Clock::duration estimate_time{}, front_time{};
+  auto timed = [](Clock::duration& total, auto&& step) {
+    const auto start = Clock::now();
+    step();
+    total += Clock::now() - start;
+  };
+  auto run_front = [&](double factor, bool remnant) {
+    timed(front_time,
+          [&] { front = mesh_on_patches(*estimate, input, flow_iterations, factor, remnant); });
+  };
+  auto time_note = [&] {
+    std::ostringstream note;
+    note << "time: shape estimate " << std::chrono::duration<double>(estimate_time).count()
+         << " s, front on the patches " << std::chrono::duration<double>(front_time).count()
+         << " s";
+    return note.str();
+  };
   for (int round = 0; round < 2; ++round) {
-    estimate.emplace(estimate_shape(hole, attempt));
+    timed(estimate_time, [&] { estimate.emplace(estimate_shape(hole, attempt)); });
     if (!estimate->ok) {
       report.failure = "shape estimate: " + estimate->failure;
       return report;
     }
     report.notes.push_back(describe_estimate(*estimate, hole.points.size()));
-    front = mesh_on_patches(*estimate, input, flow_iterations);
+    run_front(1.0, false);
     if (front.closed || !attempt.simplify) break;
     report.notes.push_back("front on the simplified estimate failed (" + front.failure +
                            "); estimate rebuilt from every border node");
@@ -219,7 +239,7 @@ Hole_fill_report fill_hole(PolygonMesh& pm, VertexPointMap vpm,
     };
     const std::string first_failure = front.failure;
     for (const Retry& r : {Retry{0.7, false}, Retry{1.4, false}, Retry{1.0, true}}) {
-      front = mesh_on_patches(*estimate, input, flow_iterations, r.factor, r.remnant);
+      run_front(r.factor, r.remnant);
       if (front.closed) {
         report.notes.push_back("front on the patches stuck (" + first_failure + "); closed " +
                                (r.remnant ? std::string("with its last loops triangulated")
@@ -228,6 +248,7 @@ Hole_fill_report fill_hole(PolygonMesh& pm, VertexPointMap vpm,
       }
     }
   }
+  report.notes.push_back(time_note());
   if (!front.closed) {
     report.failure = "advancing front on the patches: " + front.failure;
     return report;
