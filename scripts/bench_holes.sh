@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
 # Regenerates the "Hole filling fidelity" section of doc/benchmarks.md and its plots in
 # doc/images/ with `mesh_repair bench holes` (doc/bench_holes.md).
-# Usage: scripts/bench_holes.sh [--quick]
+# Usage: scripts/bench_holes.sh [--quick | --held-out]
 #   MESH_REPAIR=path/to/mesh_repair  (default: build/bin/mesh_repair, built if missing)
-#   BENCH_METHODS=a,b,...            (default: all)
+#   BENCH_METHODS=a,b,...            (default: all; --held-out: shape_prediction,liepa_c1,liepa_c2)
 # --quick: sphere and torus only, one seed (a smoke run; doc/ is not touched).
+# --held-out: holes the methods were not tuned on (eight meshes, seeds 4-6, and jagged borders
+#   with seeds 1-3) into bench-out/held-out-{disc,jagged}; prints the medians over the holes
+#   every method closed and the time growth (doc/shape_prediction.md); doc/ is not touched.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 tool=${MESH_REPAIR:-$root/build/bin/mesh_repair}
@@ -13,6 +16,26 @@ if [[ ! -x "$tool" ]]; then
 fi
 meshes_dir=$root/.cache/cgal-demo/meshes
 [[ -f "$meshes_dir/elephant.off" ]] || "$root/scripts/fetch_demo_data.sh"
+
+if [[ "${1:-}" == "--held-out" ]]; then
+  methods=${BENCH_METHODS:-shape_prediction,liepa_c1,liepa_c2}
+  meshes=()
+  for name in elephant bunny00 head femur fandisk camel bull cow; do
+    [[ -f "$meshes_dir/$name.off" ]] && meshes+=(--mesh "$meshes_dir/$name.off")
+  done
+  for shape in disc jagged; do
+    seeds=4,5,6
+    [[ $shape == jagged ]] && seeds=1,2,3
+    out=$root/bench-out/held-out-$shape
+    "$tool" bench holes --shape "$shape" --holes 3 --radius 0.05,0.12 --seeds "$seeds" \
+      --methods "$methods" --out "$out" --no-plots --quiet "${meshes[@]}"
+    echo "### held-out, $shape holes, seeds $seeds"
+    sed -n '/^Medians over the/,/^Holes not closed/p' "$out/table.md" | sed '$d'
+    /usr/bin/env python3 "$root/scripts/bench_growth.py" "$out/results.jsonl"
+    echo
+  done
+  exit 0
+fi
 
 methods=${BENCH_METHODS:-all}
 out=$root/bench-out/holes
@@ -63,6 +86,13 @@ command_line=${command_line//$root\//}
   echo "the bounding-box diagonal; on sphere and torus the E norms use the exact surface."
   echo
   sed -n '/^| method |/,$p' "$out/table.md"
+  echo
+  echo "Time of each method against CGAL's continuity 1 and 2, per hole, over the holes both"
+  echo "closed, and its growth with the border size (\`scripts/bench_growth.py\`: the ratio grows"
+  echo "when the 95% interval of its slope lies above 0; \"own fill\": the holes a method with"
+  echo "fallbacks filled itself):"
+  echo
+  /usr/bin/env python3 "$root/scripts/bench_growth.py" "$out/results.jsonl"
   echo
   for plot in bar_einf_rel bar_normal_deviation_max_deg bar_min_alpha bar_seconds error_vs_size \
               error_vs_radius; do

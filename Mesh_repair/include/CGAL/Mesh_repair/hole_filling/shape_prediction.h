@@ -29,8 +29,8 @@ namespace Mesh_repair {
 /// Fills the hole bounded by the border halfedge `border_halfedge` by shape prediction. The
 /// faces and vertices it creates are appended to `patch`; the border vertices do not move. Only
 /// `CGAL::Mesh_repair::fill_hole()` and `fill_holes()` check and roll back patches (and fall back
-/// to `advancing_front`, then `liepa`, when this method fails): call those unless you check the
-/// patch yourself.
+/// to `liepa`, then `advancing_front`, when this method fails; see `shape_prediction_sequence`
+/// in fill_holes.h): call those unless you check the patch yourself.
 ///
 /// \tparam PolygonMesh a model of `MutableFaceGraph` and `FaceListGraph`, triangulated
 /// \cgalNamedParamsBegin
