@@ -102,7 +102,8 @@ Hole_fill_report fill_hole_shape_prediction(
   // (doc/shape_prediction.md, "GA stall").
   options.ga.stall_generations = 15;
   // ... counting only improvements of at least 0.002 (of the fitness range [0, 1]): on the
-  // held-out bench holes the same fidelity in 0.90 of the time (doc/shape_prediction.md).
+  // bench table and held-out holes the same fidelity in 0.91-0.92 of the time
+  // (doc/shape_prediction.md).
   options.ga.stall_improvement = 0.002;
   const std::array<double, 3> weights =
       choose_parameter(get_parameter(np, internal_np::fitness_weights_t()),

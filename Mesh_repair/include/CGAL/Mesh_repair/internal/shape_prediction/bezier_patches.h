@@ -245,7 +245,7 @@ class Bezier_patch_network {
 
   Bezier_patch_network(const std::vector<Point_3>& points, const std::vector<Vector_3>& normals,
                        const std::vector<std::array<int, 3>>& triangles)
-      : points_(points), triangles_(triangles), hierarchy_(std::vector<Box_hierarchy::Box>()) {
+      : points_(points), triangles_(triangles) {
     patches_.reserve(triangles.size());
     frames_.reserve(triangles.size());
     for (const auto& t : triangles) {

@@ -27,6 +27,8 @@ class Box_hierarchy {
  public:
   using Box = std::array<double, 6>;  ///< lo x, y, z, hi x, y, z
 
+  Box_hierarchy() = default;  ///< empty: `nearest` returns `size()`
+
   /// Builds the hierarchy over `boxes` (one per item). Every box is widened by a billionth of
   /// the whole extent, so that a distance the caller computes with rounding errors (a point of
   /// the triangle that rounds just outside its box) is never pruned.
