@@ -4,18 +4,30 @@
 #define CGAL_MESH_REPAIR_IO_H
 
 /// \file io.h
-/// Reading and writing meshes the way a repair tool must: every file is read as a polygon soup,
-/// validated (finite coordinates, indices in range, plausible header counts), repaired and
+/// Reading and writing meshes the way a repair tool must: every file is read as a polygon soup
+/// by our own strict readers (internal/readers/: every header and record checked, no CGAL
+/// reader sees the bytes), validated (finite coordinates, indices in range), repaired and
 /// oriented with CGAL, and only then turned into a mesh; every change of that soup stage is
 /// counted in a `Soup_repair_report`. Writing goes to a temporary file renamed over the target,
 /// so a failed or interrupted write never leaves a half-written file.
 ///
-/// Formats: OFF, OBJ, STL (ASCII and binary) and PLY (ASCII and binary), chosen by extension.
+/// Formats: OFF (ASCII and binary, [ST][C][N][4][n]OFF), OBJ, STL (ASCII and binary) and PLY
+/// (ASCII, binary little- and big-endian; faces and tristrips), chosen by extension.
+///
+/// Limits, each refused with one line naming the file, the line or byte offset and the reason:
+/// - counts a header declares must fit in the file's size (checked before any allocation);
+/// - a face has at most `internal::readers::max_polygon_vertices` (100000) vertices: CGAL's
+///   soup repair and orientation are not linear in a polygon's size;
+/// - a text line is at most 64 MB.
+/// Memory while reading a file of S bytes: the soup itself, at most about 20 S + 50 MB (see
+/// doc/fuzzing.md for the measured figures). Faces with fewer than three vertices are left
+/// out of the soup and counted as degenerate polygons removed.
 
+#include <CGAL/Mesh_repair/internal/file_safety.h>
 #include <CGAL/Mesh_repair/internal/json.h>
+#include <CGAL/Mesh_repair/internal/readers/read_soup.h>
 #include <CGAL/Mesh_repair/internal/soup_validation.h>
 
-#include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -25,6 +37,7 @@
 #include <array>
 #include <cstdio>
 #include <exception>
+#include <fstream>
 #include <set>
 #include <string>
 #include <utility>
@@ -100,26 +113,49 @@ template <class Point>
 struct Polygon_soup {
   std::vector<Point> points;
   std::vector<std::vector<std::size_t>> polygons;
+  /// Faces of the file with fewer than three vertices, left out of `polygons`.
+  std::size_t short_polygons_skipped = 0;
 };
 
+/// Reads a mesh file's bytes held in memory (`format` "OFF", "OBJ", "STL" or "PLY"; `name`
+/// for the messages) into a validated soup. Returns an empty string on success, else one line.
+template <class Point>
+std::string read_polygon_soup_from_memory(const char* data, std::size_t size,
+                                          const std::string& format, const std::string& name,
+                                          Polygon_soup<Point>& soup) {
+  internal::readers::Byte_reader in(data, size);
+  internal::readers::Read_counts counts;
+  std::string error =
+      internal::readers::read_soup(in, format, name, soup.points, soup.polygons, counts);
+  soup.short_polygons_skipped = counts.short_polygons;
+  if (!error.empty()) return error;
+  return internal::validate_soup(name, soup.points, soup.polygons);
+}
+
 /// Reads `filename` (OFF, OBJ, STL or PLY, by extension) into a polygon soup and validates it.
-/// Returns an empty string on success, else one line saying what is wrong with the file.
-/// Never throws; never modifies the file.
+/// Returns an empty string on success, else one line saying what is wrong with the file and
+/// where. Never throws; never modifies the file.
 template <class Point>
 std::string read_polygon_soup(const std::string& filename, Polygon_soup<Point>& soup) {
   soup.points.clear();
   soup.polygons.clear();
+  soup.short_polygons_skipped = 0;
   std::string error = internal::precheck_mesh_file(filename);
   if (!error.empty()) return error;
-  try {
-    if (!CGAL::IO::read_polygon_soup(filename, soup.points, soup.polygons,
-                                     CGAL::parameters::verbose(false)))
-      return filename + ": not a readable " + internal::format_name(filename) + " mesh";
-  } catch (const std::bad_alloc&) {
-    return filename + ": out of memory while reading (corrupt counts?)";
-  } catch (const std::exception& e) {
-    return filename + ": cannot be read: " + e.what();
+  std::FILE* file = std::fopen(filename.c_str(), "rb");
+  if (!file) return filename + ": cannot be opened for reading";
+  struct stat info;
+  if (::fstat(::fileno(file), &info) != 0 || !S_ISREG(info.st_mode)) {
+    std::fclose(file);
+    return filename + ": not a regular file";
   }
+  internal::readers::Byte_reader in(file, std::uintmax_t(info.st_size));
+  internal::readers::Read_counts counts;
+  error = internal::readers::read_soup(in, internal::format_name(filename), filename, soup.points,
+                                       soup.polygons, counts);
+  std::fclose(file);
+  soup.short_polygons_skipped = counts.short_polygons;
+  if (!error.empty()) return error;
   return internal::validate_soup(filename, soup.points, soup.polygons);
 }
 
@@ -214,6 +250,8 @@ std::string read_mesh(const std::string& filename, PolygonMesh& pm, Soup_repair_
   report.input_points = soup.points.size();
   report.input_polygons = soup.polygons.size();
   if (options.repair_soup) report = repair_polygon_soup(soup);
+  report.input_polygons += soup.short_polygons_skipped;
+  report.degenerate_polygons_removed += soup.short_polygons_skipped;
   if (soup.polygons.empty()) return filename + ": no valid face left after soup repair";
   error = soup_to_mesh(soup, pm, options.triangulate, report);
   if (!error.empty()) {
@@ -230,19 +268,38 @@ template <class PolygonMesh>
 std::string write_mesh(const std::string& filename, const PolygonMesh& pm, bool binary = false) {
   const std::string format = internal::format_name(filename);
   if (format.empty()) return filename + ": unknown output format (use .off, .obj, .stl or .ply)";
+  std::string error = internal::check_writable(filename);
+  if (!error.empty()) return error;
+  internal::remove_stale_temporaries(filename);
   const std::string temporary = internal::temporary_name_for(filename);
   internal::register_temporary_file(temporary);
   bool ok = false;
   try {
-    ok = CGAL::IO::write_polygon_mesh(
-        temporary, pm, CGAL::parameters::stream_precision(17).use_binary_mode(binary));
+    // CGAL prints its own complaints on std::cerr; ours is the only message.
+    internal::Silence_cerr quiet;
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    CGAL::IO::set_mode(out, binary ? CGAL::IO::BINARY : CGAL::IO::ASCII);
+    if (out) {
+      const auto np = CGAL::parameters::stream_precision(17).use_binary_mode(binary);
+      if (format == "OFF")
+        ok = CGAL::IO::write_OFF(out, pm, np);
+      else if (format == "OBJ")
+        ok = CGAL::IO::write_OBJ(out, pm, np);
+      else if (format == "STL")
+        ok = CGAL::IO::write_STL(out, pm, np);
+      else
+        ok = CGAL::IO::write_PLY(out, pm, np);
+      out.close();
+      ok = ok && !out.fail();
+    }
   } catch (const std::exception&) {
     ok = false;
   }
   if (!ok) {
     std::remove(temporary.c_str());
     internal::register_temporary_file({});
-    return filename + ": cannot be written";
+    return filename + ": cannot be written (" + internal::folder_of(filename) +
+           " not writable or full)";
   }
   const bool renamed = std::rename(temporary.c_str(), filename.c_str()) == 0;
   if (!renamed) std::remove(temporary.c_str());

@@ -3,9 +3,10 @@
 #ifndef CGAL_MESH_REPAIR_INTERNAL_SOUP_VALIDATION_H
 #define CGAL_MESH_REPAIR_INTERNAL_SOUP_VALIDATION_H
 
-// Checks on mesh files before and after CGAL reads them. CGAL's readers trust header counts
-// (an OFF header declaring 10^9 vertices makes them allocate for it) and accept NaN
-// coordinates and out-of-range indices; a repair tool must refuse such files with one clear line.
+// Checks on mesh files before and after our readers (internal/readers/) parse them: the file
+// must be a readable, non-empty regular file of a known format, and the soup must have finite
+// coordinates, indices in range and at least one face. The readers check every header and
+// record themselves; these checks are what holds for every format.
 
 #include <algorithm>
 #include <cctype>
@@ -47,109 +48,8 @@ inline std::string format_name(const std::string& filename) {
   return {};
 }
 
-// Smallest number of bytes a vertex / face record can take in the file, to reject headers that
-// declare more elements than the file can hold before any reader allocates for them.
-constexpr std::uintmax_t min_vertex_bytes = 6;  // "0 0 0\n" in ASCII; binary needs 12
-constexpr std::uintmax_t min_face_bytes = 4;    // "3 0 1 2" needs more; keep the bound loose
-
-inline std::string check_declared_counts(const std::string& filename, std::uintmax_t file_size,
-                                         std::uintmax_t vertices, std::uintmax_t faces) {
-  if (vertices > file_size / min_vertex_bytes || faces > file_size / min_face_bytes) {
-    std::ostringstream out;
-    out << filename << ": header declares " << vertices << " vertices and " << faces
-        << " faces but the file has only " << file_size << " bytes (truncated or corrupt)";
-    return out.str();
-  }
-  return {};
-}
-
-// OFF headers: a keyword containing "OFF" ([ST][C][N][4][n]OFF, optionally "BINARY"), then the
-// vertex and face counts; '#' starts a comment.
-inline std::string precheck_off(const std::string& filename, std::ifstream& in,
-                                std::uintmax_t size) {
-  auto is_number = [](const std::string& t) {
-    return !t.empty() &&
-           std::all_of(t.begin(), t.end(), [](unsigned char c) { return std::isdigit(c); });
-  };
-  std::string token;
-  std::vector<std::uintmax_t> counts;
-  bool seen_keyword = false;
-  while (counts.size() < 2 && in >> token) {
-    if (token[0] == '#') {
-      std::string rest;
-      std::getline(in, rest);
-    } else if (!seen_keyword) {
-      if (token.find("OFF") == std::string::npos)
-        return filename + ": not an OFF file (no OFF keyword)";
-      seen_keyword = true;
-    } else if (token == "BINARY") {
-      return {};  // binary counts follow; CGAL's reader checks them
-    } else if (!is_number(token) || token.size() > 18) {
-      return filename + ": OFF header expected vertex and face counts, found '" +
-             token.substr(0, 40) + "'";
-    } else {
-      counts.push_back(std::stoull(token));
-    }
-  }
-  if (counts.size() < 2) return filename + ": OFF header is incomplete";
-  return check_declared_counts(filename, size, counts[0], counts[1]);
-}
-
-// PLY headers: "element vertex N" and "element face N" lines up to "end_header".
-inline std::string precheck_ply(const std::string& filename, std::ifstream& in,
-                                std::uintmax_t size) {
-  std::string line;
-  std::getline(in, line);
-  if (line.rfind("ply", 0) != 0) return filename + ": not a PLY file (no 'ply' magic)";
-  std::uintmax_t vertices = 0, faces = 0;
-  for (int lines = 0; std::getline(in, line) && lines < 10000; ++lines) {
-    if (line.rfind("end_header", 0) == 0)
-      return check_declared_counts(filename, size, vertices, faces);
-    std::istringstream words(line);
-    std::string keyword, element, count;
-    words >> keyword >> element >> count;
-    if (keyword != "element") continue;
-    if (count.empty() || count.size() > 18 ||
-        !std::all_of(count.begin(), count.end(), [](unsigned char c) { return std::isdigit(c); }))
-      return filename + ": PLY header has an invalid element count";
-    if (element == "vertex") vertices = std::stoull(count);
-    if (element == "face") faces = std::stoull(count);
-  }
-  return filename + ": PLY header has no end_header";
-}
-
-// STL: a binary file is 84 bytes plus 50 per triangle; an ASCII one starts with "solid".
-inline std::string precheck_stl(const std::string& filename, std::ifstream& in,
-                                std::uintmax_t size) {
-  char head[84] = {0};
-  in.read(head, 84);
-  const std::streamsize got = in.gcount();
-  std::string start(head, std::size_t(std::min<std::streamsize>(got, 5)));
-  bool ascii_candidate = start == "solid";
-  if (ascii_candidate) {
-    // Binary files may also begin with "solid"; ASCII ones contain "facet" or "endsolid" soon.
-    std::string text(head, std::size_t(got));
-    std::string more(4096, '\0');
-    in.read(&more[0], std::streamsize(more.size()));
-    text += more.substr(0, std::size_t(in.gcount()));
-    if (text.find("facet") != std::string::npos || text.find("endsolid") != std::string::npos)
-      return {};
-  }
-  if (got < 84) return filename + ": truncated binary STL (shorter than its 84-byte header)";
-  std::uint32_t triangles = 0;
-  std::memcpy(&triangles, head + 80, 4);
-  if (std::uintmax_t(84) + std::uintmax_t(50) * triangles != size) {
-    std::ostringstream out;
-    out << filename << ": binary STL declares " << triangles << " triangles ("
-        << 84 + 50 * std::uintmax_t(triangles) << " bytes) but the file has " << size
-        << " bytes (truncated or corrupt)";
-    return out.str();
-  }
-  return {};
-}
-
 /// Checks that `filename` is a readable, non-empty regular file of a known format whose header
-/// counts fit its size. Returns an empty string when it may be handed to CGAL's reader.
+/// Returns an empty string when it may be handed to a reader.
 inline std::string precheck_mesh_file(const std::string& filename) {
   struct stat info;
   if (::stat(filename.c_str(), &info) != 0) return filename + ": no such file";
@@ -159,13 +59,8 @@ inline std::string precheck_mesh_file(const std::string& filename) {
   if (format.empty())
     return filename + ": unknown format '" + lower_extension(filename) +
            "' (expected .off, .obj, .stl or .ply)";
-  std::ifstream in(filename, std::ios::binary);
-  if (!in) return filename + ": cannot be opened for reading";
-  const std::uintmax_t size = std::uintmax_t(info.st_size);
-  if (size == 0) return filename + ": empty file";
-  if (format == "OFF") return precheck_off(filename, in, size);
-  if (format == "PLY") return precheck_ply(filename, in, size);
-  if (format == "STL") return precheck_stl(filename, in, size);
+  if (::access(filename.c_str(), R_OK) != 0) return filename + ": cannot be opened for reading";
+  if (info.st_size == 0) return filename + ": empty file";
   return {};
 }
 
@@ -173,7 +68,9 @@ inline std::string precheck_mesh_file(const std::string& filename) {
 template <class Point>
 std::string validate_soup(const std::string& filename, const std::vector<Point>& points,
                           const std::vector<std::vector<std::size_t>>& polygons) {
-  if (points.empty() || polygons.empty()) return filename + ": contains no faces";
+  if (polygons.empty())
+    return filename + ": contains no faces (no face with three or more vertices)";
+  if (points.empty()) return filename + ": contains no vertices";
   for (std::size_t i = 0; i < points.size(); ++i) {
     const auto& p = points[i];
     if (!std::isfinite(CGAL::to_double(p.x())) || !std::isfinite(CGAL::to_double(p.y())) ||

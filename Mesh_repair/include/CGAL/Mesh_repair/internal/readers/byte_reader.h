@@ -1,0 +1,256 @@
+// Copyright (c) 2026 Mesh_repair developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_MESH_REPAIR_INTERNAL_READERS_BYTE_READER_H
+#define CGAL_MESH_REPAIR_INTERNAL_READERS_BYTE_READER_H
+
+// What the strict mesh readers share: a byte source (a file read in fixed chunks, or a buffer in
+// memory for the fuzz targets) that knows its byte offset and line, the parse error they throw,
+// number parsing and the limits that bound their memory and the work after them.
+
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <string_view>
+#include <algorithm>
+#include <cstring>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Mesh_repair {
+namespace internal {
+namespace readers {
+
+/// Polygons with more vertices than this are refused: CGAL's soup repair and orientation are
+/// not linear in a polygon's size (a polygon of 10^6 vertices ran for hours). Real meshes stay
+/// far below it (a CAD cap of a cylinder has a few hundred sides).
+constexpr std::size_t max_polygon_vertices = 100000;
+
+/// Longest text line accepted (a face of `max_polygon_vertices` indices takes under 2 MB).
+constexpr std::size_t max_line_bytes = std::size_t(64) << 20;
+
+/// A malformed file: the reason, and where (a line for text formats, else a byte offset).
+struct Parse_error {
+  std::string reason;
+  std::uintmax_t line = 0;    ///< 1-based line of text formats; 0 when unknown
+  std::uintmax_t offset = 0;  ///< byte offset, used when `line` is 0
+};
+
+[[noreturn]] inline void fail_at_line(std::uintmax_t line, const std::string& reason) {
+  Parse_error e;
+  e.reason = reason;
+  e.line = line;
+  throw e;
+}
+
+[[noreturn]] inline void fail_at_offset(std::uintmax_t offset, const std::string& reason) {
+  Parse_error e;
+  e.reason = reason;
+  e.offset = offset;
+  throw e;
+}
+
+/// Bytes of a file or of a memory buffer, read forwards.
+class Byte_reader {
+ public:
+  /// Reads `file` (opened in binary mode) in chunks of 1 MB; `size` is its size in bytes.
+  Byte_reader(std::FILE* file, std::uintmax_t size) : file_(file), size_(size), buffer_(1 << 20) {}
+  /// Reads a buffer in memory (not copied).
+  Byte_reader(const char* data, std::size_t size)
+      : size_(size), begin_(data), current_(data), end_(data + size) {}
+
+  std::uintmax_t size() const { return size_; }
+  std::uintmax_t offset() const { return consumed_ + std::uintmax_t(current_ - begin_); }
+  std::uintmax_t line() const { return line_; }
+
+  /// The next byte without consuming it, or -1 at the end.
+  int peek() {
+    if (current_ == end_ && !refill()) return -1;
+    return static_cast<unsigned char>(*current_);
+  }
+  int get() {
+    if (current_ == end_ && !refill()) return -1;
+    const char c = *current_++;
+    if (c == '\n') ++line_;
+    return static_cast<unsigned char>(c);
+  }
+  /// Reads `n` bytes; false when the data ends before.
+  bool read(void* out, std::size_t n) {
+    char* target = static_cast<char*>(out);
+    while (n > 0) {
+      if (current_ == end_ && !refill()) return false;
+      const std::size_t take = std::min<std::size_t>(n, std::size_t(end_ - current_));
+      std::memcpy(target, current_, take);
+      current_ += take;
+      target += take;
+      n -= take;
+    }
+    return true;
+  }
+
+  /// Reads one text line (without its '\n' or "\r\n") into `line`; false at the end of data.
+  /// A NUL byte or another control character is an error (text formats never contain one), and
+  /// so is a line longer than `max_line_bytes`; both are found before the line is complete, so
+  /// a sparse file of zeros is refused at its first zero byte.
+  bool read_line(std::string& line) {
+    line.clear();
+    if (peek() < 0) return false;
+    while (true) {
+      if (current_ == end_ && !refill()) break;
+      const char* stop = static_cast<const char*>(std::memchr(current_, '\n', end_ - current_));
+      const char* until = stop ? stop : end_;
+      for (const char* c = current_; c != until; ++c) {
+        const unsigned char u = static_cast<unsigned char>(*c);
+        if (u < 32 && u != '\t' && u != '\f' && u != '\v' && u != '\r')
+          fail_at_line(line_ + 1, "unexpected control byte 0x" + hex(u) + " (byte offset " +
+                                      std::to_string(consumed_ + std::uintmax_t(c - begin_)) +
+                                      ") in a text file");
+      }
+      if (line.size() + std::size_t(until - current_) > max_line_bytes)
+        fail_at_line(line_ + 1, "line longer than " + std::to_string(max_line_bytes) + " bytes");
+      line.append(current_, until);
+      current_ = until;
+      if (stop) {
+        ++current_;
+        break;
+      }
+    }
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    ++line_;
+    return true;
+  }
+
+  /// Starts again from the first byte (files and buffers alike).
+  bool rewind() {
+    line_ = 0;
+    if (!file_) {
+      current_ = begin_;
+      return true;
+    }
+    if (std::fseek(file_, 0, SEEK_SET) != 0) return false;
+    consumed_ = 0;
+    begin_ = current_ = end_ = nullptr;
+    return true;
+  }
+
+  static std::string hex(unsigned c) {
+    const char digits[] = "0123456789abcdef";
+    return std::string{digits[(c >> 4) & 15], digits[c & 15]};
+  }
+
+ private:
+  bool refill() {
+    if (!file_) return false;
+    consumed_ += std::uintmax_t(end_ - begin_);
+    const std::size_t got = std::fread(buffer_.data(), 1, buffer_.size(), file_);
+    begin_ = current_ = buffer_.data();
+    end_ = begin_ + got;
+    return got > 0;
+  }
+
+  std::FILE* file_ = nullptr;
+  std::uintmax_t size_ = 0;
+  std::vector<char> buffer_;
+  const char* begin_ = nullptr;
+  const char* current_ = nullptr;
+  const char* end_ = nullptr;
+  std::uintmax_t consumed_ = 0;
+  std::uintmax_t line_ = 0;  // lines completed so far
+};
+
+/// Whitespace-separated words of one line, read in order.
+class Tokens {
+ public:
+  explicit Tokens(const std::string& line) : p_(line.data()), end_(line.data() + line.size()) {}
+  /// The next word, or an empty string at the end of the line.
+  std::string_view next() {
+    skip_space();
+    const char* start = p_;
+    while (p_ != end_ && !is_space(*p_)) ++p_;
+    return std::string_view(start, std::size_t(p_ - start));
+  }
+  bool at_end() {
+    skip_space();
+    return p_ == end_;
+  }
+  /// What is left of the line, leading spaces skipped.
+  std::string_view rest() {
+    skip_space();
+    return std::string_view(p_, std::size_t(end_ - p_));
+  }
+  static bool is_space(char c) {
+    return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v';
+  }
+
+ private:
+  void skip_space() {
+    while (p_ != end_ && is_space(*p_)) ++p_;
+  }
+  const char* p_;
+  const char* end_;
+};
+
+/// Shortens a word for an error message.
+inline std::string quoted(std::string_view word) {
+  std::string text(word.substr(0, 40));
+  for (char& c : text)
+    if (static_cast<unsigned char>(c) < 32 || static_cast<unsigned char>(c) > 126) c = '?';
+  return "'" + text + (word.size() > 40 ? "...'" : "'");
+}
+
+/// A decimal number (strtod syntax without hexadecimal; a leading '+' allowed). False when the
+/// word is not entirely a number; non-finite values are parsed and left to the caller.
+inline bool parse_double(std::string_view word, double& value) {
+  if (!word.empty() && word.front() == '+') word.remove_prefix(1);
+  if (word.empty()) return false;
+  const auto result = std::from_chars(word.data(), word.data() + word.size(), value);
+  if (result.ec == std::errc::result_out_of_range && result.ptr == word.data() + word.size()) {
+    // Beyond double's range: strtod says whether it overflows (inf, refused later) or
+    // underflows (0 or a denormal).
+    value = std::strtod(std::string(word).c_str(), nullptr);
+    return true;
+  }
+  return result.ec == std::errc() && result.ptr == word.data() + word.size();
+}
+
+/// A signed decimal integer that fits in 64 bits.
+inline bool parse_integer(std::string_view word, long long& value) {
+  if (!word.empty() && word.front() == '+') word.remove_prefix(1);
+  if (word.empty()) return false;
+  const auto result = std::from_chars(word.data(), word.data() + word.size(), value);
+  return result.ec == std::errc() && result.ptr == word.data() + word.size();
+}
+
+/// A finite coordinate, else a parse error at `line`.
+inline double coordinate(std::string_view word, std::uintmax_t line, const char* what) {
+  double value = 0;
+  if (!parse_double(word, value))
+    fail_at_line(line, std::string("expected a number (") + what + "), found " + quoted(word));
+  if (!std::isfinite(value))
+    fail_at_line(line, std::string("non-finite ") + what + " " + quoted(word) + " (NaN or inf)");
+  return value;
+}
+
+/// A polygon's vertex count checked against the limit.
+inline void check_polygon_size(std::uintmax_t n, std::uintmax_t line, std::uintmax_t offset) {
+  if (n <= max_polygon_vertices) return;
+  const std::string reason = "a face of " + std::to_string(n) + " vertices exceeds the limit of " +
+                             std::to_string(max_polygon_vertices) + " vertices per face";
+  if (line > 0) fail_at_line(line, reason);
+  fail_at_offset(offset, reason);
+}
+
+/// What a reader produces besides the soup: faces with fewer than three vertices, which are
+/// left out of the soup (counted, so the soup report stays complete).
+struct Read_counts {
+  std::size_t short_polygons = 0;
+};
+
+}  // namespace readers
+}  // namespace internal
+}  // namespace Mesh_repair
+}  // namespace CGAL
+
+#endif  // CGAL_MESH_REPAIR_INTERNAL_READERS_BYTE_READER_H

@@ -1,0 +1,73 @@
+// Copyright (c) 2026 Mesh_repair developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_MESH_REPAIR_INTERNAL_READERS_READ_SOUP_H
+#define CGAL_MESH_REPAIR_INTERNAL_READERS_READ_SOUP_H
+
+// The strict readers behind io.h's read_polygon_soup, one per format, from a file or from
+// memory (the fuzz targets). No CGAL reader sees the bytes: CGAL's readers trust their input.
+//
+// Resources: a file of S bytes is read in 1 MB chunks; what is kept is the soup itself, at
+// most about 14 bytes per input byte for faces (a triangle is 56 bytes in memory and takes at
+// least 4 bytes of binary PLY or 8 of ASCII OFF/OBJ) and 24 bytes per point; every count a
+// header declares is checked against the file size before anything is allocated for it, so a
+// truncated or sparse file claiming 10^9 elements is refused at once.
+
+#include <CGAL/Mesh_repair/internal/readers/byte_reader.h>
+#include <CGAL/Mesh_repair/internal/readers/obj_reader.h>
+#include <CGAL/Mesh_repair/internal/readers/off_reader.h>
+#include <CGAL/Mesh_repair/internal/readers/ply_reader.h>
+#include <CGAL/Mesh_repair/internal/readers/stl_reader.h>
+
+#include <new>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Mesh_repair {
+namespace internal {
+namespace readers {
+
+/// Reads `in` as `format` ("OFF", "OBJ", "STL" or "PLY") into a soup. Returns an empty string,
+/// or one line "NAME: line L: reason" / "NAME: byte B: reason"; the soup is then empty.
+template <class Point>
+std::string read_soup(Byte_reader& in, const std::string& format, const std::string& name,
+                      std::vector<Point>& points, std::vector<std::vector<std::size_t>>& polygons,
+                      Read_counts& counts) {
+  points.clear();
+  polygons.clear();
+  counts = Read_counts();
+  std::string error;
+  try {
+    if (format == "OFF")
+      read_off(in, points, polygons, counts);
+    else if (format == "OBJ")
+      read_obj(in, points, polygons, counts);
+    else if (format == "STL")
+      read_stl(in, points, polygons, counts);
+    else if (format == "PLY")
+      read_ply(in, points, polygons, counts);
+    else
+      error = name + ": unknown format '" + format + "'";
+  } catch (const Parse_error& e) {
+    error = name + ": " +
+            (e.line > 0 ? "line " + std::to_string(e.line) : "byte " + std::to_string(e.offset)) +
+            ": " + e.reason;
+  } catch (const std::bad_alloc&) {
+    error = name + ": out of memory while reading";
+  } catch (const std::length_error&) {
+    error = name + ": out of memory while reading";
+  }
+  if (!error.empty()) {
+    std::vector<Point>().swap(points);
+    std::vector<std::vector<std::size_t>>().swap(polygons);
+  }
+  return error;
+}
+
+}  // namespace readers
+}  // namespace internal
+}  // namespace Mesh_repair
+}  // namespace CGAL
+
+#endif  // CGAL_MESH_REPAIR_INTERNAL_READERS_READ_SOUP_H
