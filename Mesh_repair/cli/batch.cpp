@@ -29,6 +29,7 @@ struct Job {
   std::string outcome;  ///< "repaired", "incomplete", "failed", "crashed", "timeout"
   double seconds = 0;
   std::map<std::string, std::string> figures;  ///< from the child's summary file
+  std::string note;                            ///< why an entry was not run
 };
 
 // Options passed on to each child: everything but the batch options themselves.
@@ -48,15 +49,30 @@ std::vector<std::string> child_options(const std::vector<std::string>& raw) {
   return kept;
 }
 
-std::vector<fs::path> mesh_files(const fs::path& folder) {
-  std::vector<fs::path> files;
-  for (const auto& entry : fs::directory_iterator(folder)) {
-    if (!entry.is_regular_file()) continue;
-    if (!CGAL::Mesh_repair::internal::format_name(entry.path().string()).empty())
-      files.push_back(entry.path());
+// Every entry of the folder, sorted. Mesh files are repaired; the others get a summary row
+// without a run: "skipped" (another extension, a folder) or "failed" (a mesh name that is not
+// a regular file, such as a link to /dev/zero, or a dangling link).
+std::vector<fs::path> folder_entries(const fs::path& folder) {
+  std::vector<fs::path> entries;
+  for (const auto& entry : fs::directory_iterator(folder)) entries.push_back(entry.path());
+  std::sort(entries.begin(), entries.end());
+  return entries;
+}
+
+// Why `file` is not run, or an empty string when it is.
+std::string not_run_reason(const fs::path& file, std::string& outcome) {
+  std::error_code error;
+  const fs::file_status status = fs::status(file, error);
+  const bool mesh_name = !CGAL::Mesh_repair::internal::format_name(file.string()).empty();
+  if (!mesh_name || fs::is_directory(status)) {
+    outcome = "skipped";
+    return fs::is_directory(status) ? "a folder" : "not a mesh file (.off .obj .stl .ply)";
   }
-  std::sort(files.begin(), files.end());
-  return files;
+  outcome = "failed";
+  if (error || !fs::exists(status)) return "a dangling link";
+  if (!fs::is_regular_file(status)) return "not a regular file";
+  outcome.clear();
+  return {};
 }
 
 pid_t start_child(Job& job, const std::vector<std::string>& options) {
@@ -122,7 +138,7 @@ void write_summaries(const fs::path& out_dir, const std::vector<Job>& jobs) {
   std::ostringstream csv, jsonl;
   csv << "file,outcome,exit_status,seconds";
   for (const auto& k : figure_keys) csv << ',' << k;
-  csv << '\n';
+  csv << ",note\n";
   for (const Job& job : jobs) {
     csv << job.input.filename().string() << ',' << job.outcome << ',' << job.status << ','
         << job.seconds;
@@ -134,8 +150,8 @@ void write_summaries(const fs::path& out_dir, const std::vector<Job>& jobs) {
       csv << ',' << value;
       jsonl << ",\"" << k << "\":" << (value.empty() ? "null" : value);
     }
-    csv << '\n';
-    jsonl << "}\n";
+    csv << ',' << job.note << '\n';
+    jsonl << ",\"note\":\"" << job.note << "\"}\n";
   }
   save_text((out_dir / "summary.csv").string(), csv.str());
   save_text((out_dir / "summary.jsonl").string(), jsonl.str());
@@ -159,9 +175,17 @@ int run_batch_repair(const Arguments& args, const std::vector<std::string>& raw_
 
   const std::vector<std::string> options = child_options(raw_args);
   std::vector<Job> jobs;
-  for (const fs::path& file : mesh_files(in_dir)) {
+  std::size_t not_run = 0;
+  for (const fs::path& file : folder_entries(in_dir)) {
     Job job;
     job.input = file;
+    job.note = not_run_reason(file, job.outcome);
+    if (!job.note.empty()) {
+      job.status = job.outcome == "failed" ? int(exit_bad_input) : -1;
+      ++not_run;
+      jobs.push_back(job);
+      continue;
+    }
     job.output = out_dir / file.filename();
     // Named after the whole file name: sphere.off, sphere.ply and sphere.stl are three jobs.
     const std::string name = file.filename().string();
@@ -170,15 +194,17 @@ int run_batch_repair(const Arguments& args, const std::vector<std::string>& raw_
     job.log = out_dir / (name + ".log");
     jobs.push_back(job);
   }
-  std::cout << "batch: " << jobs.size() << " mesh files in " << in_dir.string() << ", "
-            << jobs_at_once << " at once\n";
+  std::cout << "batch: " << jobs.size() - not_run << " mesh files in " << in_dir.string() << " ("
+            << not_run << " other entries listed, not run), " << jobs_at_once << " at once\n";
 
-  std::size_t next = 0, running = 0, done = 0;
+  std::size_t next = 0, running = 0, done = not_run;
   while (done < jobs.size()) {
     while (running < std::size_t(jobs_at_once) && next < jobs.size()) {
-      jobs[next].pid = start_child(jobs[next], options);
+      if (jobs[next].note.empty()) {
+        jobs[next].pid = start_child(jobs[next], options);
+        ++running;
+      }
       ++next;
-      ++running;
     }
     for (Job& job : jobs) {
       if (job.pid <= 0) continue;
@@ -210,7 +236,8 @@ int run_batch_repair(const Arguments& args, const std::vector<std::string>& raw_
   for (const auto& o : outcomes) std::cout << ' ' << o.second << ' ' << o.first;
   std::cout << "\nsummary: " << (out_dir / "summary.csv").string() << ", "
             << (out_dir / "summary.jsonl").string() << '\n';
-  return outcomes["repaired"] == int(jobs.size()) ? exit_success : exit_incomplete;
+  return outcomes["repaired"] + outcomes["skipped"] == int(jobs.size()) ? exit_success
+                                                                        : exit_incomplete;
 }
 
 }  // namespace mesh_repair_cli

@@ -68,8 +68,33 @@ long long Arguments::get_int(const std::string& name, long long fallback) const 
 }
 
 std::string Arguments::single_input(const std::string& usage) const {
+  if (positional_.size() == 2 && !has("-o") &&
+      !CGAL::Mesh_repair::internal::format_name(positional_[1]).empty())
+    throw Input_error("expected one input file; did you mean -o " + positional_[1] +
+                      "? usage: " + usage);
   if (positional_.size() != 1) throw Input_error("expected one input file; usage: " + usage);
-  return positional_.front();
+  const std::string& input = positional_.front();
+  check_outputs(input);
+  return input;
+}
+
+void Arguments::check_outputs(const std::string& input) const {
+  namespace MRI = CGAL::Mesh_repair::internal;
+  std::vector<std::string> outputs;
+  for (const char* option : {"-o", "--report", "--json", "--summary", "--patch-out"})
+    if (has(option)) outputs.push_back(get(option));
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    const std::string& out = outputs[i];
+    if (out == input || MRI::same_file(out, input))
+      throw Input_error(out +
+                        ": is the input file; refusing to overwrite it (choose another "
+                        "output)");
+    for (std::size_t j = 0; j < i; ++j)
+      if (out == outputs[j] || MRI::same_file(out, outputs[j]))
+        throw Input_error(out + ": given for two outputs");
+    const std::string error = MRI::check_writable(out);
+    if (!error.empty()) throw Input_error(error);
+  }
 }
 
 double parse_double(const std::string& text, const std::string& option) {
@@ -92,17 +117,37 @@ long long parse_int(const std::string& text, const std::string& option) {
   throw Input_error("option " + option + " expects an integer, got '" + text + "'");
 }
 
+namespace {
+// Every file this run read: no save may write over one of them (links included).
+std::vector<std::string>& files_read() {
+  static std::vector<std::string> files;
+  return files;
+}
+
+void refuse_to_overwrite_input(const std::string& path) {
+  for (const std::string& input : files_read())
+    if (path == input || CGAL::Mesh_repair::internal::same_file(path, input))
+      throw Input_error(path + ": is the input file; refusing to overwrite it");
+}
+}  // namespace
+
 void load_mesh(const std::string& path, Mesh& mesh, CGAL::Mesh_repair::Soup_repair_report& report) {
+  files_read().push_back(path);
   const std::string error = CGAL::Mesh_repair::read_mesh(path, mesh, report);
   if (!error.empty()) throw Input_error(error);
 }
 
 void save_mesh(const std::string& path, const Mesh& mesh, bool binary) {
+  refuse_to_overwrite_input(path);
   const std::string error = CGAL::Mesh_repair::write_mesh(path, mesh, binary);
   if (!error.empty()) throw Input_error(error);
 }
 
 void save_text(const std::string& path, const std::string& text) {
+  refuse_to_overwrite_input(path);
+  const std::string writable = CGAL::Mesh_repair::internal::check_writable(path);
+  if (!writable.empty()) throw Input_error(writable);
+  CGAL::Mesh_repair::internal::remove_stale_temporaries(path);
   const std::string temporary = CGAL::Mesh_repair::internal::temporary_name_for(path);
   CGAL::Mesh_repair::internal::register_temporary_file(temporary);
   {
@@ -181,6 +226,9 @@ extern "C" void on_signal(int signal_number) {
 void install_signal_handlers() {
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
+  std::signal(SIGHUP, on_signal);
+  std::signal(SIGPIPE, on_signal);
+  std::signal(SIGXFSZ, on_signal);
 }
 
 bool progress_wanted(const Arguments& args) {

@@ -49,8 +49,12 @@ class Arguments {
   double get_double(const std::string& name, double fallback) const;
   long long get_int(const std::string& name, long long fallback) const;
   const std::vector<std::string>& positional() const { return positional_; }
-  /// The single input file, or a usage error naming `usage`.
+  /// The single input file, or a usage error naming `usage`. Also checks, before any work,
+  /// that every output (-o, --report, --json, --summary, --patch-out) is writable and is not
+  /// the input (same device and inode, so links count) nor another output.
   std::string single_input(const std::string& usage) const;
+  /// The output checks of `single_input`.
+  void check_outputs(const std::string& input) const;
 
  private:
   std::set<std::string> flags_;

@@ -8,6 +8,8 @@
 #include "commands.h"
 #include "common.h"
 
+#include <CGAL/exceptions.h>
+
 #include <cstring>
 #include <exception>
 #include <iostream>
@@ -16,6 +18,19 @@
 #include <vector>
 
 namespace {
+
+// A message on one line: line breaks become "; ".
+std::string one_line(std::string text) {
+  while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
+  std::string out;
+  for (char c : text) {
+    if (c == '\n')
+      out += "; ";
+    else if (c != '\r')
+      out += c;
+  }
+  return out;
+}
 
 void print_usage(std::ostream& out) {
   out << "usage: mesh_repair COMMAND [options]\n\ncommands:\n";
@@ -53,8 +68,16 @@ int main(int argc, char** argv) {
     } catch (const std::bad_alloc&) {
       std::cerr << "mesh_repair " << name << ": out of memory\n";
       return exit_bad_input;
+    } catch (const CGAL::Failure_exception& e) {
+      // CGAL's text spans several lines (expression, file, line); ours is one.
+      std::cerr << "mesh_repair " << name << ": internal error: a CGAL check failed ("
+                << one_line(e.expression().empty() ? e.message() : e.expression()) << ")\n";
+      return exit_bad_input;
     } catch (const std::exception& e) {
-      std::cerr << "mesh_repair " << name << ": error: " << e.what() << '\n';
+      std::cerr << "mesh_repair " << name << ": error: " << one_line(e.what()) << '\n';
+      return exit_bad_input;
+    } catch (...) {
+      std::cerr << "mesh_repair " << name << ": error: unknown exception\n";
       return exit_bad_input;
     }
   }
