@@ -45,6 +45,28 @@ inline double norm(const std::array<double, 3>& a) {
   return std::sqrt(dot(a, a));
 }
 
+/// The points scaled by one power of two so that their largest coordinate magnitude is in
+/// [0.5, 1): every measure here is scale-invariant, the scaling is exact, and coordinates up to
+/// 1e308 then give no infinite differences or NaN products.
+template <std::size_t N>
+std::array<std::array<double, 3>, N> scaled(std::array<std::array<double, 3>, N> p) {
+  double largest = 0;
+  for (const auto& q : p)
+    for (double x : q) largest = std::max(largest, std::abs(x));
+  if (!(largest > 0) || !std::isfinite(largest)) return p;
+  int exponent = 0;
+  std::frexp(largest, &exponent);
+  for (auto& q : p)
+    for (double& x : q) x = std::ldexp(x, -exponent);
+  return p;
+}
+
+template <class Point>
+std::array<std::array<double, 3>, 3> scaled_triangle(const Point& a, const Point& b,
+                                                     const Point& c) {
+  return scaled<3>({to_array(a), to_array(b), to_array(c)});
+}
+
 /// Interior angles (radians) at a, b, c; zero-length edges give zero angles.
 inline std::array<double, 3> interior_angles(const std::array<double, 3>& a,
                                              const std::array<double, 3>& b,
@@ -62,7 +84,8 @@ inline std::array<double, 3> interior_angles(const std::array<double, 3>& a,
 template <class Point>
 double alpha(const Point& a, const Point& b, const Point& c) {
   using namespace internal;
-  const auto pa = to_array(a), pb = to_array(b), pc = to_array(c);
+  const auto t = scaled_triangle(a, b, c);
+  const auto &pa = t[0], &pb = t[1], &pc = t[2];
   const auto ab = sub(pb, pa), ac = sub(pc, pa), bc = sub(pc, pb);
   const double denominator = dot(ab, ab) + dot(bc, bc) + dot(ac, ac);
   if (denominator == 0) return 0;
@@ -73,7 +96,8 @@ double alpha(const Point& a, const Point& b, const Point& c) {
 template <class Point>
 double aspect_ratio(const Point& a, const Point& b, const Point& c) {
   using namespace internal;
-  const auto pa = to_array(a), pb = to_array(b), pc = to_array(c);
+  const auto t = scaled_triangle(a, b, c);
+  const auto &pa = t[0], &pb = t[1], &pc = t[2];
   const double lab = norm(sub(pb, pa)), lbc = norm(sub(pc, pb)), lca = norm(sub(pa, pc));
   const double longest = std::max({lab, lbc, lca});
   const double half_perimeter = 0.5 * (lab + lbc + lca);
@@ -86,7 +110,8 @@ double aspect_ratio(const Point& a, const Point& b, const Point& c) {
 template <class Point>
 double shape_factor(const Point& a, const Point& b, const Point& c) {
   using namespace internal;
-  const auto angles = interior_angles(to_array(a), to_array(b), to_array(c));
+  const auto t = scaled_triangle(a, b, c);
+  const auto angles = interior_angles(t[0], t[1], t[2]);
   if (angles[0] + angles[1] + angles[2] == 0) return 0;
   double equilateral_factor = 0;
   for (double theta : angles) equilateral_factor += (theta - CGAL_PI / 3) * (theta - CGAL_PI / 3);
@@ -98,7 +123,8 @@ double shape_factor(const Point& a, const Point& b, const Point& c) {
 template <class Point>
 std::pair<double, double> min_max_angle_deg(const Point& a, const Point& b, const Point& c) {
   using namespace internal;
-  const auto angles = interior_angles(to_array(a), to_array(b), to_array(c));
+  const auto t = scaled_triangle(a, b, c);
+  const auto angles = interior_angles(t[0], t[1], t[2]);
   const double to_deg = 180.0 / CGAL_PI;
   return {to_deg * *std::min_element(angles.begin(), angles.end()),
           to_deg * *std::max_element(angles.begin(), angles.end())};
@@ -110,8 +136,8 @@ std::pair<double, double> min_max_angle_deg(const Point& a, const Point& b, cons
 template <class Point>
 double quad_beta(const Point& p0, const Point& p1, const Point& p2, const Point& p3) {
   using namespace internal;
-  const std::array<std::array<double, 3>, 4> p = {to_array(p0), to_array(p1), to_array(p2),
-                                                  to_array(p3)};
+  const std::array<std::array<double, 3>, 4> p =
+      scaled<4>({to_array(p0), to_array(p1), to_array(p2), to_array(p3)});
   // Signed sines relative to the quad's mean normal, so a reflex (non-convex) corner counts as bad.
   std::array<double, 3> normal{0, 0, 0};
   for (int k = 0; k < 4; ++k) {
@@ -152,8 +178,11 @@ Quality_statistics quality_statistics(const PolygonMesh& pm, VertexPointMap vpm,
   s.aspect_ratio_histogram.assign(bins, 0);
   s.shape_factor_histogram.assign(bins, 0);
   s.min_angle_histogram.assign(bins, 0);
+  // NaN (a non-finite input point) goes to the first bin; the cast sees only [0, bins].
   auto bin = [bins](double value, double range) {
-    return std::size_t(std::clamp(int(value / range * bins), 0, bins - 1));
+    const double x = value / range * bins;
+    if (!(x > 0)) return std::size_t(0);
+    return std::size_t(std::min<double>(x, bins - 1));
   };
   for (auto f : faces(pm)) {
     auto h = halfedge(f, pm);

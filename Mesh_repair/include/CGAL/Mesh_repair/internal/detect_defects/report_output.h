@@ -10,6 +10,7 @@
 #include <CGAL/Mesh_repair/internal/json.h>
 #include <CGAL/Mesh_repair/io.h>
 
+#include <cmath>
 #include <sstream>
 #include <string>
 
@@ -285,8 +286,18 @@ inline std::string summary(const Defect_report& r, std::size_t examples = 3) {
   for (std::size_t i = 0; i < r.components.size() && i < examples; ++i)
     out << "  component " << i << ": " << r.components[i].faces << " faces, "
         << internal::name(r.components[i].orientation) << '\n';
-  out << "quality: min angle " << r.quality.min_angle_deg << " deg, mean shape factor "
-      << r.quality.mean_shape_factor << ", mean Q " << r.quality.mean_aspect_ratio << '\n';
+  // A figure that overflowed (coordinates near 1e308) is printed as n/a, never as -nan.
+  auto figure = [](double x) {
+    std::ostringstream text;
+    if (std::isfinite(x))
+      text << x;
+    else
+      text << "n/a";
+    return text.str();
+  };
+  out << "quality: min angle " << figure(r.quality.min_angle_deg) << " deg, mean shape factor "
+      << figure(r.quality.mean_shape_factor) << ", mean Q " << figure(r.quality.mean_aspect_ratio)
+      << '\n';
   if (r.cancelled) out << "detection was cancelled: the report is partial\n";
   return out.str();
 }
