@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 #include <sys/wait.h>
+#include <unistd.h>
 
 namespace {
 namespace fs = std::filesystem;
@@ -25,10 +26,31 @@ fs::path scratch(const std::string& name) {
   return dir / name;
 }
 
-Cli_run run_cli(const std::string& arguments) {
+// Removes the scratch folder once every test of this program has run.
+struct Scratch_cleanup : ::testing::Environment {
+  void TearDown() override {
+    std::error_code ignored;
+    fs::remove_all(scratch("x").parent_path(), ignored);
+  }
+};
+const auto* const cleanup = ::testing::AddGlobalTestEnvironment(new Scratch_cleanup);
+
+const fs::path corpus_dir =
+    fs::path(MESH_REPAIR_SOURCE_DIR) / "test" / "fuzz" / "corpus-regression";
+const fs::path readers_dir = fs::path(MESH_REPAIR_TEST_DATA_DIR) / "readers";
+
+std::string file_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+Cli_run run_cli(const std::string& arguments, int timeout_seconds = 20) {
   const fs::path err = scratch("stderr.txt");
-  const std::string command = std::string("timeout 20 ") + MESH_REPAIR_CLI + " " + arguments +
-                              " >/dev/null 2>" + err.string();
+  // --signal=KILL: a hang shows as a signal (status -1), never as an exit status.
+  const std::string command = "timeout --signal=KILL " + std::to_string(timeout_seconds) + " " +
+                              MESH_REPAIR_CLI + " " + arguments + " >/dev/null 2>" + err.string();
   const auto start = std::chrono::steady_clock::now();
   const int raw = std::system(command.c_str());
   const double seconds =
@@ -103,6 +125,128 @@ TEST(CliRobustness, BadUsageExitsTwo) {
   EXPECT_EQ(run_cli("check a.off b.off").status, 2);
   EXPECT_EQ(run_cli("check a.off --no-such-option").status, 2);
   EXPECT_EQ(run_cli("check a.off --tolerance abc").status, 2);
+}
+
+// Every input that ever crashed, hung or ran away (test/fuzz/corpus-regression/) through the
+// release tool: exit 0, 1 or 2, never a signal, within the timeout, input untouched.
+TEST(CliRobustness, RegressionCorpusNeverCrashesOrHangs) {
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(corpus_dir)) files.push_back(entry.path());
+  ASSERT_GE(files.size(), 20u);
+  for (const fs::path& file : files) {
+    const std::string before = file_text(file);
+    const Cli_run check = run_cli("check " + file.string(), 30);
+    EXPECT_TRUE(check.status >= 0 && check.status <= 2) << file << ": " << check.stderr_text;
+    if (check.status == 2) EXPECT_EQ(count_lines(check.stderr_text), 1u) << file;
+    const fs::path out = scratch("out" + file.extension().string());
+    const Cli_run repair =
+        run_cli("repair " + file.string() + " -o " + out.string() + " --quiet", 60);
+    EXPECT_TRUE(repair.status >= 0 && repair.status <= 2) << file << ": " << repair.stderr_text;
+    EXPECT_EQ(file_text(file), before) << file;
+    fs::remove(out);
+  }
+}
+
+// The reader variants of test/data/readers all read through the tool.
+TEST(CliRobustness, ReaderVariantsAreCheckedWithoutError) {
+  for (const auto& entry : fs::directory_iterator(readers_dir)) {
+    const Cli_run run = run_cli("check " + entry.path().string());
+    EXPECT_TRUE(run.status == 0 || run.status == 1) << entry.path() << ": " << run.stderr_text;
+  }
+}
+
+TEST(CliRobustness, NoCommandWritesItsInputEvenThroughALink) {
+  const fs::path input = scratch("input.off");
+  fs::copy_file(readers_dir / "comments.off", input, fs::copy_options::overwrite_existing);
+  const fs::path link = scratch("link.off");
+  fs::remove(link);
+  fs::create_symlink(input, link);
+  const std::string before = file_text(input);
+  for (const std::string& command : {"fill " + input.string() + " -o " + input.string(),
+                                     "repair " + input.string() + " -o " + link.string(),
+                                     "stitch " + link.string() + " -o " + input.string(),
+                                     "repair " + input.string() + " -o " +
+                                         scratch("ok.off").string() + " --report " + input.string(),
+                                     "check " + input.string() + " --json " + link.string()}) {
+    const Cli_run run = run_cli(command);
+    EXPECT_EQ(run.status, 2) << command << ": " << run.stderr_text;
+    EXPECT_NE(run.stderr_text.find("is the input file"), std::string::npos) << run.stderr_text;
+    EXPECT_EQ(file_text(input), before) << command;
+  }
+  EXPECT_FALSE(fs::exists(scratch("ok.off")));
+}
+
+TEST(CliRobustness, UnwritableOutputsAreFoundBeforeAnyWork) {
+  const fs::path input = readers_dir / "comments.off";
+  const fs::path out = scratch("written.off");
+  fs::remove(out);
+  for (const std::string& command :
+       {"repair " + input.string() + " -o /nonexistent/folder/out.off",
+        "repair " + input.string() + " -o " + out.string() + " --report /nonexistent/r.json",
+        "fill " + input.string() + " -o " + scratch("").string()}) {
+    const Cli_run run = run_cli(command);
+    EXPECT_EQ(run.status, 2) << command;
+    EXPECT_EQ(count_lines(run.stderr_text), 1u) << run.stderr_text;
+    EXPECT_EQ(run.stderr_text.find("Could not create"), std::string::npos) << run.stderr_text;
+    EXPECT_FALSE(fs::exists(out)) << command;  // the mesh is not written when the report cannot be
+  }
+}
+
+TEST(CliRobustness, RepairWithTwoFilesSuggestsDashO) {
+  const Cli_run run = run_cli("repair " + (readers_dir / "comments.off").string() + " out.off");
+  EXPECT_EQ(run.status, 2);
+  EXPECT_NE(run.stderr_text.find("did you mean -o out.off"), std::string::npos) << run.stderr_text;
+}
+
+TEST(CliRobustness, StaleTemporaryOfADeadProcessIsRemovedByTheNextWrite) {
+  const fs::path folder = scratch("stale");
+  fs::create_directories(folder);
+  const fs::path stale = folder / ".tmp-999999999-out.off";
+  std::ofstream(stale) << "half written";
+  const Cli_run run = run_cli("repair " + (readers_dir / "comments.off").string() + " -o " +
+                              (folder / "out.off").string() + " --quiet");
+  EXPECT_TRUE(run.status == 0 || run.status == 1) << run.stderr_text;
+  EXPECT_FALSE(fs::exists(stale));
+  EXPECT_TRUE(fs::exists(folder / "out.off"));
+  fs::remove_all(folder);
+}
+
+// A sparse 2 GB file is refused in under 2 s (the header claims what the file cannot hold, or
+// its first zero byte stops the text reader).
+TEST(CliRobustness, SparseTwoGigabyteFilesAreRefusedAtOnce) {
+  for (const auto& c : std::vector<std::pair<std::string, std::string>>{
+           {"sparse.off", "OFF\n1000000000 1000000000 0\n"},
+           {"sparse_fits.off", "OFF\n100000000 10 0\n"},
+           {"sparse.obj", "v 0 0 0\n"}}) {
+    const fs::path path = scratch(c.first);
+    write_bytes(path, c.second);
+    fs::resize_file(path, std::uintmax_t(2) << 30);
+    const Cli_run run = run_cli("check " + path.string());
+    EXPECT_EQ(run.status, 2) << c.first << ": " << run.stderr_text;
+    EXPECT_LT(run.seconds, 2.0) << c.first;
+    fs::remove(path);
+  }
+}
+
+// Every entry of the batch folder is in the summary: a .off link to /dev/zero is a failed row.
+TEST(CliRobustness, BatchListsEveryEntryOfTheFolder) {
+  const fs::path in = scratch("batch_in"), out = scratch("batch_out");
+  fs::remove_all(in);
+  fs::remove_all(out);
+  fs::create_directories(in);
+  fs::copy_file(readers_dir / "comments.off", in / "good.off");
+  fs::create_symlink("/dev/zero", in / "zero.off");
+  fs::create_symlink(in / "missing.off", in / "dangling.obj");
+  std::ofstream(in / "notes.txt") << "not a mesh";
+  const Cli_run run = run_cli("repair --batch " + in.string() + " --out-dir " + out.string(), 60);
+  EXPECT_EQ(run.status, 1) << run.stderr_text;
+  const std::string summary = file_text(out / "summary.csv");
+  for (const char* row :
+       {"good.off,repaired", "zero.off,failed,2", "dangling.obj,failed,2", "notes.txt,skipped"})
+    EXPECT_NE(summary.find(row), std::string::npos) << row << "\n" << summary;
+  EXPECT_NE(summary.find("not a regular file"), std::string::npos) << summary;
+  fs::remove_all(in);
+  fs::remove_all(out);
 }
 
 }  // namespace
