@@ -145,7 +145,7 @@ def regression_corpus():
           "end_header\n1 0 0 0\n1 1 0 0\n1 0 1 0\n3 0 1 2\n")
     write(CORPUS, "face_of_a_million_indices.off",
           "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n1000000 " + " ".join(["0 1 2"] * 10) + "\n")
-    n = 100001  # one past the limit of vertices per face
+    n = 10001  # one past the limit of vertices per face
     write(CORPUS, "polygon_past_the_limit.obj",
           "".join("v %d 0 0\n" % i for i in range(3)) + "f " + " ".join(
               str(1 + i % 3) for i in range(n)) + "\n")

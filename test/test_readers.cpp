@@ -134,7 +134,7 @@ TEST(Readers, MalformedFilesGiveOneLineWithPlaceAndReason) {
       {"property_before_element.ply", "line 3: 'property' before any 'element'"},
       {"vertex_x_is_a_list.ply", "line 3: vertex property 'x' is a list"},
       {"face_of_a_million_indices.off", "line 6: a face of 1000000 vertices exceeds the limit"},
-      {"polygon_past_the_limit.obj", "line 4: a face of 100001 vertices exceeds the limit"},
+      {"polygon_past_the_limit.obj", "line 4: a face of 10001 vertices exceeds the limit"},
       {"huge_counts.off", "line 2: the header declares 1000000000 vertices"},
       {"huge_counts.ply", "line 9: the header declares records of at least"},
       {"huge_counts_binary.stl", "byte 80: binary STL declares 1000000000 triangles"},
@@ -181,7 +181,8 @@ TEST(Readers, MoreMalformedHeadersAndRecords) {
            "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
            "0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n",
        "line 13: vertex index 3 out of range (3 vertices)"},
-      {"a.off", "OFF\n3 1\n0 0 0\n1 0\n0 1 0\n3 0 1 2\n", "line 4: vertex 1 has 2 coordinates, expected 3"},
+      {"a.off", "OFF\n3 1\n0 0 0\n1 0\n0 1 0\n3 0 1 2\n",
+       "line 4: vertex 1 has 2 coordinates, expected 3"},
       {"b.off", "OFF\n3 1\n0 0 0\n1 0 0\n0 1 0\n", "the file ends after 0 of 1 faces"},
       {"c.off", "OFF\n3 x\n", "line 2: expected the number of faces, found 'x'"},
       {"d.off", "OF\n", "line 1: not an OFF file: the first word is 'OF'"},
@@ -227,24 +228,34 @@ TEST(Readers, FacesUpToTheLimitAreRead) {
 // whose header claims 10^9 vertices before reading anything.
 TEST(Readers, SparseMultiGigabyteFilesAreRefusedAtOnce) {
   Scratch s;
-  const std::uintmax_t size = std::uintmax_t(2) << 30;
-  for (const auto& c : std::vector<std::pair<std::string, std::string>>{
-           {"sparse.off", "OFF\n100000000 100000000 0\n"},
-           {"claims.off", "OFF\n1000000000 1000000000 0\n"},
-           {"sparse.obj", "v 0 0 0\n"},
-           {"sparse.ply",
-            "ply\nformat binary_little_endian 1.0\nelement vertex 1000000000\nproperty float x\n"
-            "property float y\nproperty float z\nend_header\n"},
-           {"sparse.stl", "solid"}}) {
-    const fs::path path = s.write(c.first, c.second);
-    fs::resize_file(path, size);
+  const std::uintmax_t two_gb = std::uintmax_t(2) << 30;
+  const std::string ply_head =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 100000000\nproperty float x\n"
+      "property float y\nproperty float z\n";
+  std::string stl_head = "solid binary";
+  stl_head.resize(80, ' ');
+  const std::uint32_t triangles = 40000000;  // 84 + 50 * 40000000 bytes: a valid size
+  stl_head.append(reinterpret_cast<const char*>(&triangles), 4);
+  for (const auto& c : std::vector<std::tuple<std::string, std::string, std::uintmax_t>>{
+           {"sparse.off", "OFF\n100000000 100000000 0\n", two_gb},
+           {"claims.off", "OFF\n1000000000 1000000000 0\n", two_gb},
+           {"sparse.obj", "v 0 0 0\n", two_gb},
+           {"claims.ply",
+            ply_head + "element face 1000000000\nproperty list uchar int "
+                       "vertex_indices\nend_header\n",
+            two_gb},
+           {"sparse.ply", ply_head + "end_header\n", two_gb},
+           {"sparse.stl", stl_head, 84 + 50 * std::uintmax_t(triangles)},
+           {"sparse_binary.off", "OFF BINARY\n", two_gb}}) {
+    const fs::path path = s.write(std::get<0>(c), std::get<1>(c));
+    fs::resize_file(path, std::get<2>(c));
     const auto start = std::chrono::steady_clock::now();
     MR::Polygon_soup<Point> soup;
     const std::string error = read_soup(path, soup);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    EXPECT_FALSE(error.empty()) << c.first;
-    EXPECT_LT(seconds, 2.0) << c.first << ": " << error;
+    EXPECT_FALSE(error.empty()) << std::get<0>(c);
+    EXPECT_LT(seconds, 2.0) << std::get<0>(c) << ": " << error;
     fs::remove(path);
   }
 }

@@ -16,7 +16,7 @@
 ///
 /// Limits, each refused with one line naming the file, the line or byte offset and the reason:
 /// - counts a header declares must fit in the file's size (checked before any allocation);
-/// - a face has at most `internal::readers::max_polygon_vertices` (100000) vertices: CGAL's
+/// - a face has at most `internal::readers::max_polygon_vertices` (10000) vertices: CGAL's
 ///   soup repair and orientation are not linear in a polygon's size;
 /// - a text line is at most 64 MB.
 /// Memory while reading a file of S bytes: the soup itself, at most about 20 S + 50 MB (see

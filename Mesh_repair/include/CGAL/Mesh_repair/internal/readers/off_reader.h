@@ -201,6 +201,7 @@ inline double off_big_endian_float(Byte_reader& in, const char* what) {
 template <class Point>
 void read_off_binary(Byte_reader& in, Off_header h, std::vector<Point>& points,
                      std::vector<std::vector<std::size_t>>& polygons, Read_counts& counts) {
+  in.refuse_zero_chunks();
   if (h.dimension == 0) h.dimension = off_big_endian_u32(in, "the dimension");
   if (h.dimension < 2 || h.dimension > 16)
     fail_at_offset(in.offset(), "binary nOFF dimension " + std::to_string(h.dimension) +

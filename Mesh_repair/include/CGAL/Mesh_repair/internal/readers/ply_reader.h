@@ -395,6 +395,7 @@ void read_ply(Byte_reader& in, std::vector<Point>& points,
               std::vector<std::vector<std::size_t>>& polygons, Read_counts& counts) {
   const Ply_header h = read_ply_header(in);
   Ply_record_reader records(in, h.format);
+  if (h.format != Ply_format::ascii) in.refuse_zero_chunks();
   for (const Ply_element& e : h.elements)
     read_ply_element(records, h, e, points, polygons, counts, in.size() - in.offset());
 }

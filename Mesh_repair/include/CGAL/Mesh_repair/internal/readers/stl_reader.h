@@ -69,6 +69,7 @@ inline bool stl_starts_with_solid(Byte_reader& in) {
 template <class Point>
 void read_stl_binary(Byte_reader& in, std::uint32_t triangles, std::vector<Point>& points,
                      std::vector<std::vector<std::size_t>>& polygons, Read_counts&) {
+  in.refuse_zero_chunks();
   Point_indexer<Point> indexer(points);
   polygons.reserve(triangles);
   unsigned char record[50];
