@@ -200,11 +200,18 @@ inline Ply_header read_ply_header(Byte_reader& in) {
   h.data_offset = in.offset();
   check_ply_elements(h);
   std::uintmax_t needed = 0;
-  for (const Ply_element& e : h.elements) needed += e.count * ply_min_record_bytes(e, h.format);
-  if (needed > in.size() - h.data_offset)
-    fail_at_line(in.line(), "the header declares records of at least " + std::to_string(needed) +
-                                " bytes but " + std::to_string(in.size() - h.data_offset) +
-                                " bytes follow it (truncated or corrupt)");
+  const std::uintmax_t available = in.size() - h.data_offset;
+  for (const Ply_element& e : h.elements) {
+    const std::uintmax_t bytes = ply_min_record_bytes(e, h.format);
+    // Saturating: a count times a record size beyond the file is enough to refuse it.
+    needed =
+        e.count > 0 && bytes > (available + 1) / e.count ? available + 1 : needed + e.count * bytes;
+    if (needed > available) break;
+  }
+  if (needed > available)
+    fail_at_line(in.line(), "the header declares more records than the " +
+                                std::to_string(available) +
+                                " bytes after it can hold (truncated or corrupt)");
   return h;
 }
 
