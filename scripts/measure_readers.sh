@@ -63,5 +63,5 @@ printf 'solid x\n' >"$DIR/sparse.stl"
 printf 'ply\nformat binary_little_endian 1.0\nelement vertex 100000000\nproperty float x\nproperty float y\nproperty float z\nelement face 100000000\nproperty list uchar int vertex_indices\nend_header\n' >"$DIR/sparse.ply"
 for f in sparse.off sparse.obj sparse.stl sparse.ply; do truncate -s 2G "$DIR/$f"; done
 for f in grid.off grid.obj short_faces.off uchar_faces.ply distinct.stl sparse.off sparse.obj sparse.stl sparse.ply; do
-  /usr/bin/time -f "  peak %M KB, %e s" "$DIR/read_soup_stats" "$DIR/$f" 2>&1 | sed "s|$DIR/||" || true
+  /usr/bin/time -f "  peak %M KB, %e s wall, %U s user" "$DIR/read_soup_stats" "$DIR/$f" 2>&1 | sed "s|$DIR/||" || true
 done
