@@ -12,6 +12,8 @@
 #include <cmath>
 #include <filesystem>
 #include <random>
+#include <string>
+#include <vector>
 
 namespace {
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -64,6 +66,60 @@ TEST(AutomaticRepair, SphereWithThreeHolesBecomesClosedAndValid) {
     const Point& p = mesh.point(v);
     EXPECT_NEAR(std::sqrt(CGAL::squared_distance(p, Point(0, 0, 0))), 1.0, 0.05);
   }
+}
+
+// Records the steps a visitor sees: every start has its end, in nesting order.
+struct Step_log {
+  std::vector<std::string> open;
+  std::size_t starts = 0, ends = 0, unbalanced = 0, progress_calls = 0;
+  std::size_t cancel_after = std::size_t(-1);
+  void start_step(const char* name) {
+    open.push_back(name);
+    ++starts;
+  }
+  bool progress(double) { return ++progress_calls < cancel_after; }
+  void end_step(const char* name) {
+    ++ends;
+    if (open.empty() || open.back() != name) ++unbalanced;
+    if (!open.empty()) open.pop_back();
+  }
+};
+
+TEST(AutomaticRepair, EveryStepReachesTheVisitorBalancedEvenWhenCancelled) {
+  Mesh mesh = sphere_with_holes();
+  Step_log log;
+  const auto result = MR::automatic_repair(mesh, MR::parameters::visitor(std::ref(log)));
+  EXPECT_GE(log.starts, result.steps.size());  // each step, and the operators' own steps inside
+  EXPECT_EQ(log.starts, log.ends);
+  EXPECT_EQ(log.unbalanced, 0u);
+  EXPECT_TRUE(log.open.empty());
+
+  Mesh cancelled_mesh = sphere_with_holes();
+  Step_log stopper;
+  stopper.cancel_after = 2;
+  const auto cancelled =
+      MR::automatic_repair(cancelled_mesh, MR::parameters::visitor(std::ref(stopper)));
+  EXPECT_TRUE(cancelled.cancelled);
+  EXPECT_FALSE(cancelled.complete());
+  EXPECT_EQ(stopper.starts, stopper.ends);
+  EXPECT_EQ(stopper.unbalanced, 0u);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(cancelled_mesh));
+}
+
+// A visitor passed by value is copied (the caller's object does not change); by std::ref it is
+// used in place.
+TEST(AutomaticRepair, VisitorsWorkByValueAndByReference) {
+  Mesh by_value = sphere_with_holes();
+  Step_log copied;
+  MR::automatic_repair(by_value, MR::parameters::visitor(copied));
+  EXPECT_EQ(copied.starts, 0u);
+  EXPECT_TRUE(CGAL::is_closed(by_value));
+
+  Mesh by_reference = sphere_with_holes();
+  Step_log used;
+  MR::automatic_repair(by_reference, MR::parameters::visitor(std::ref(used)));
+  EXPECT_GT(used.starts, 0u);
+  EXPECT_TRUE(CGAL::is_closed(by_reference));
 }
 
 TEST(AutomaticRepair, HolesOverTheSizeLimitAreLeftOpenAndListed) {

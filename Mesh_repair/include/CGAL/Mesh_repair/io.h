@@ -12,7 +12,7 @@
 ///
 /// Formats: OFF, OBJ, STL (ASCII and binary) and PLY (ASCII and binary), chosen by extension.
 
-#include <CGAL/Mesh_repair/internal/json.h>
+#include <CGAL/Mesh_repair/json_writer.h>
 #include <CGAL/Mesh_repair/internal/soup_validation.h>
 
 #include <CGAL/IO/polygon_soup_io.h>
@@ -64,7 +64,7 @@ struct Soup_repair_report {
 };
 
 /// Writes the soup report as a JSON object (the `soup_repair` member of every report).
-inline void write_json(internal::Json_writer& json, const Soup_repair_report& r) {
+inline void write_json(Json_writer& json, const Soup_repair_report& r) {
   json.begin_object()
       .field("input_points", r.input_points)
       .field("input_polygons", r.input_polygons)

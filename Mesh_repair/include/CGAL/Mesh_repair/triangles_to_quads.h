@@ -415,8 +415,8 @@ Quad_conversion_result triangles_to_quads(
   using parameters::get_parameter;
   auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                               get_property_map(CGAL::vertex_point, pm));
-  const double feature_angle_deg =
-      choose_parameter(get_parameter(np, internal_np::feature_angle_deg_t()), 120.0);
+  const double feature_angle_deg = choose_parameter(
+      get_parameter(np, internal_np::feature_angle_deg_t()), default_smoothing_feature_angle_deg);
   internal::Topology_cleaner<PolygonMesh, decltype(vpm)> cleaner(pm, vpm, feature_angle_deg);
   Quad_conversion_result result;
   result.merged_pairs = cleaner.merge_pairs(0.05);
@@ -442,8 +442,8 @@ Edge_flip_result flip_edges_for_quality(PolygonMesh& pm,
   using parameters::get_parameter;
   auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                               get_property_map(CGAL::vertex_point, pm));
-  const double feature_angle_deg =
-      choose_parameter(get_parameter(np, internal_np::feature_angle_deg_t()), 120.0);
+  const double feature_angle_deg = choose_parameter(
+      get_parameter(np, internal_np::feature_angle_deg_t()), default_smoothing_feature_angle_deg);
   internal::Topology_cleaner<PolygonMesh, decltype(vpm)> cleaner(pm, vpm, feature_angle_deg);
   Edge_flip_result result;
   std::tie(result.flips, result.rejected_folds) = cleaner.flip_for_quality(std::cos(CGAL_PI / 18));

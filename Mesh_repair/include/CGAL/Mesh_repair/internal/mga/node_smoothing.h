@@ -100,7 +100,11 @@ class Node_smoother {
 #ifdef CGAL_LINKED_WITH_TBB
     // One arena for all colour classes and sweeps (creating one per class costs thread start-up
     // and hand-over each time).
-    if (settings.threads > 1) arena_ = std::make_unique<tbb::task_arena>(settings.threads);
+    // 0: TBB's default number of threads (every operator's default).
+    if (settings.threads == 0)
+      arena_ = std::make_unique<tbb::task_arena>(tbb::task_arena::automatic);
+    else if (settings.threads > 1)
+      arena_ = std::make_unique<tbb::task_arena>(settings.threads);
 #endif
   }
 

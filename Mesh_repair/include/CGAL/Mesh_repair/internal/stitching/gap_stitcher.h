@@ -21,7 +21,7 @@
 #include <CGAL/Mesh_repair/internal/stitching/glue_border_pairs.h>
 #include <CGAL/Mesh_repair/internal/stitching/merge_point.h>
 #include <CGAL/Mesh_repair/internal/stitching/point_kd_tree.h>
-#include <CGAL/Mesh_repair/internal/stitching/stitch_result.h>
+#include <CGAL/Mesh_repair/stitch_result.h>
 #include <CGAL/Mesh_repair/visitor.h>
 
 #include <CGAL/Box_intersection_d/Box_with_info_d.h>
