@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Installs the Debian packages Mesh_repair needs, only those that are missing.
-# Usage: scripts/setup.sh [--with-plots] [--with-format]
+# Usage: scripts/setup.sh [--with-plots] [--with-format] [--with-python]
 #   --with-plots   adds python3-matplotlib for the bench plots
 #   --with-format  adds clang-format for scripts/check_format.sh (CI)
+#   --with-python  adds pybind11-dev, python3-numpy and python3-pytest for python/ and its tests
 set -euo pipefail
 
 packages=(cmake g++ make libcgal-dev libeigen3-dev libboost-dev libgmp-dev libmpfr-dev
@@ -11,8 +12,9 @@ for arg in "$@"; do
   case "$arg" in
     --with-plots) packages+=(python3-matplotlib) ;;
     --with-format) packages+=(clang-format) ;;
+    --with-python) packages+=(pybind11-dev python3-numpy python3-pytest) ;;
     *)
-      echo "setup: unknown option $arg (use --with-plots, --with-format)" >&2
+      echo "setup: unknown option $arg (use --with-plots, --with-format, --with-python)" >&2
       exit 2
       ;;
   esac
