@@ -307,7 +307,10 @@ class Gap_stitcher {
     std::size_t done = 0;
     // Queries in tree order, so consecutive queries visit the same tree nodes and mesh regions.
     for (const Point_kd_tree::Item& item : tree.items()) {
-      if (!report(done++)) return;
+      if (!report(done++)) {
+        visitor_.end_step("pair border nodes");  // balanced on cancellation too
+        return;
+      }
       const std::size_t i = item.id;
       const double radius = settings_.merge_nodes ? node_tolerance_[i] : 0.0;
       tree.for_each_within(item.point, radius, [&](std::size_t j, double) {
