@@ -22,6 +22,7 @@
 #include <CGAL/Polygon_mesh_processing/polygon_mesh_to_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Surface_mesh.h>
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>
@@ -227,6 +228,21 @@ std::map<std::string, Outcome> run_every_operator() {
         outcome_of(mesh, {{"opened", double(r.holes_opened)}, {"filled", double(r.holes_filled)}});
   }
   return out;
+}
+
+/// Runs every operator on `Mesh` and on Surface_mesh and expects the same counts and meshes.
+template <class Mesh>
+void expect_results_of_surface_mesh() {
+  const auto reference = run_every_operator<Surface_mesh>();
+  const auto results = run_every_operator<Mesh>();
+  ASSERT_EQ(results.size(), reference.size());
+  for (const auto& [name, expected] : reference) {
+    const auto& got = results.at(name);
+    EXPECT_EQ(got.counts, expected.counts) << name;
+    EXPECT_EQ(got.faces.size(), expected.faces.size()) << name;
+    EXPECT_TRUE(got.faces == expected.faces) << name << ": the output meshes differ";
+    EXPECT_EQ(expected.counts.at("valid"), 1.0) << name;
+  }
 }
 
 }  // namespace face_graph_test

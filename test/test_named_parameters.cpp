@@ -146,7 +146,8 @@ std::vector<Point> shape_prediction_patch(const NamedParameters& np) {
 
 // Each GA and smoothing parameter of shape prediction changes the patch (same seed).
 // Disabled: population_size(6) and fitness_weights({1,0,0}) gave the same patch as the defaults on
-// this sphere cap (2026-12-02): either the GA ends at its first generation here or they are not read.
+// this sphere cap (2026-12-02): either the GA ends at its first generation here or they are not
+// read.
 TEST(NamedParameters, DISABLED_ShapePredictionParametersChangeThePatch) {
   const auto base = MR::parameters::max_generations(40);
   const std::vector<Point> reference = shape_prediction_patch(base);
