@@ -333,14 +333,15 @@ TEST(CurvatureVariation, InitialGridRelaxationIsTangentialAndKeepsTheContour) {
   auto smallest_angle = [&]() {
     double smallest = 180;
     for (auto f : patch.faces) {
-      std::vector<cv::Vec> p;
+      std::vector<MR::internal::Vec3> p;
       for (auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
-        p.push_back(cv::vec(mesh.point(v)));
+        p.push_back(MR::internal::to_array(mesh.point(v)));
       for (int k = 0; k < 3; ++k) {
-        const cv::Vec u = cv::minus(p[(k + 1) % 3], p[k]), w = cv::minus(p[(k + 2) % 3], p[k]);
-        smallest = std::min(smallest,
-                            std::atan2(cv::length(cv::cross_product(u, w)), cv::dot_product(u, w)) *
-                                180.0 / CGAL_PI);
+        const MR::internal::Vec3 u = MR::internal::sub(p[(k + 1) % 3], p[k]),
+                                 w = MR::internal::sub(p[(k + 2) % 3], p[k]);
+        smallest = std::min(smallest, std::atan2(MR::internal::norm(MR::internal::cross(u, w)),
+                                                 MR::internal::dot(u, w)) *
+                                          180.0 / CGAL_PI);
       }
     }
     return smallest;

@@ -92,7 +92,7 @@ Curvature_deformation_report deform_patches_curvature_variation(
   auto&& visitor = choose_parameter(
       CGAL::parameters::get_parameter_reference(np, CGAL::internal_np::visitor), default_visitor);
 
-  std::vector<internal::curvature_variation::Vec3> targets;
+  std::vector<internal::Vec3> targets;
   for (const auto& p : constraints.points)
     targets.push_back({CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())});
   double spacing = constraints.polyline_spacing;

@@ -6,7 +6,7 @@
 // Walking border cycles (closed loops of border halfedges) and describing them, shared by every
 // hole-filling method, the dispatcher and the benchmarks.
 
-#include <CGAL/Mesh_repair/quality.h>
+#include <CGAL/Mesh_repair/internal/vec3.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -21,19 +21,6 @@
 namespace CGAL {
 namespace Mesh_repair {
 namespace internal {
-
-using Vec3 = std::array<double, 3>;
-
-inline Vec3 add(const Vec3& a, const Vec3& b) {
-  return {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
-}
-inline Vec3 scale(const Vec3& a, double s) {
-  return {a[0] * s, a[1] * s, a[2] * s};
-}
-inline Vec3 normalized(const Vec3& a) {
-  const double n = norm(a);
-  return n > 0 ? scale(a, 1.0 / n) : Vec3{0, 0, 0};
-}
 
 /// One halfedge per border cycle of `pm`, in face-index-free order of the halfedge iteration.
 template <class PolygonMesh>
