@@ -39,7 +39,7 @@ void attach_constraints(const System& system, const PolygonMesh& pm,
                         const Eigen::MatrixXd& X0, const std::vector<Vec3>& targets,
                         std::vector<Linear_row>& rows, std::vector<Vec3>& right_hand_sides,
                         Curvature_deformation_report& report) {
-  auto position = [&](auto v) {
+  auto position = [&](auto v) -> Vec3 {
     const int i = system.free_index(v);
     if (i < 0) return system.position(v);
     return Vec3{X0(i, 0), X0(i, 1), X0(i, 2)};
