@@ -131,15 +131,10 @@ int run_suppress(const std::vector<std::string>& args) {
     if (mesh.is_border(h)) old_border.insert(h);
   for (auto f : faces) CGAL::Euler::remove_face(mesh.halfedge(f), mesh);
   std::vector<Mesh::Halfedge_index> holes;
-  std::unordered_set<Mesh::Halfedge_index> seen;
-  for (auto h : mesh.halfedges()) {
-    if (!mesh.is_border(h) || seen.count(h)) continue;
-    bool opened = false;
-    for (auto c : halfedges_around_face(h, mesh)) {
-      seen.insert(c);
-      opened = opened || !old_border.count(c);
-    }
-    if (opened) holes.push_back(h);
+  for (auto h : MR::internal::border_cycles(mesh)) {
+    const auto cycle = halfedges_around_face(h, mesh);
+    if (std::any_of(cycle.begin(), cycle.end(), [&](auto c) { return !old_border.count(c); }))
+      holes.push_back(h);
   }
 
   Progress_bar progress(progress_wanted(arguments));

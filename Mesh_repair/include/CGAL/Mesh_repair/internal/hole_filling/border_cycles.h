@@ -8,32 +8,29 @@
 
 #include <CGAL/Mesh_repair/internal/vec3.h>
 
+#include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <limits>
-#include <unordered_set>
 #include <vector>
 
 namespace CGAL {
 namespace Mesh_repair {
 namespace internal {
 
-/// One halfedge per border cycle of `pm`, in face-index-free order of the halfedge iteration.
+/// One halfedge per border cycle of `pm`, in the order of the halfedge iteration: CGAL's
+/// `extract_boundary_cycles`, the one border-cycle enumeration of the library (detection,
+/// filling, repair and the tool all call this).
 template <class PolygonMesh>
 std::vector<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor> border_cycles(
     const PolygonMesh& pm) {
-  using halfedge_descriptor = typename boost::graph_traits<PolygonMesh>::halfedge_descriptor;
-  std::vector<halfedge_descriptor> cycles;
-  std::unordered_set<halfedge_descriptor> visited;
-  for (halfedge_descriptor h : halfedges(pm)) {
-    if (!is_border(h, pm) || visited.count(h)) continue;
-    cycles.push_back(h);
-    for (halfedge_descriptor c : halfedges_around_face(h, pm)) visited.insert(c);
-  }
+  std::vector<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor> cycles;
+  CGAL::Polygon_mesh_processing::extract_boundary_cycles(pm, std::back_inserter(cycles));
   return cycles;
 }
 
