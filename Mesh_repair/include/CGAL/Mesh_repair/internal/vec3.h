@@ -96,10 +96,9 @@ inline Vec3 normalized(const Vec3& a) {
 
 /// The one tangent-frame builder: two unit vectors `t1`, `t2` completing the unit vector `n` to
 /// a right-handed orthonormal frame (t1, t2, n), t1 = normalized(n x helper), t2 = n x t1. The
-/// helper axis is x unless |n_x| reaches `helper_switch`, then y. Every frame of the library uses
-/// 0.6 except the two whose stored results were measured with 0.9 (the exact chord table of the
-/// GA triangulation and the ring-hole projection of detection); the frame only chooses the
-/// plane coordinates, any switch in (1/sqrt(3), 1) keeps n x helper away from zero.
+/// helper axis is x unless |n_x| reaches `helper_switch`, then y; any switch in (1/sqrt(3), 1)
+/// keeps n x helper away from zero. Every frame of the library uses 0.6 except the projection of
+/// the GA triangulation's chord table, which was built and measured with 0.9 and keeps it.
 inline void tangent_frame(const Vec3& n, Vec3& t1, Vec3& t2, double helper_switch = 0.6) {
   const Vec3 helper = std::abs(n[0]) < helper_switch ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
   t1 = normalized(cross(n, helper));
