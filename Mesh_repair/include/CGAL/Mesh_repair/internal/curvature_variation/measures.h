@@ -25,31 +25,6 @@ namespace Mesh_repair {
 namespace internal {
 namespace curvature_variation {
 
-/// Removes the faces whose three vertices lie within `radius` of `center`; returns a border
-/// halfedge of the hole (null when nothing was removed). The caller checks that the selection
-/// was a disc (one new border cycle, valid mesh).
-template <class PolygonMesh, class Point>
-typename boost::graph_traits<PolygonMesh>::halfedge_descriptor punch_ball_hole(PolygonMesh& pm,
-                                                                               const Point& center,
-                                                                               double radius) {
-  using GT = boost::graph_traits<PolygonMesh>;
-  auto vpm = get(CGAL::vertex_point, pm);
-  const Vec3 c = to_array(center);
-  std::vector<typename GT::face_descriptor> doomed;
-  for (auto f : faces(pm)) {
-    bool inside = true;
-    for (auto v : CGAL::vertices_around_face(halfedge(f, pm), pm))
-      inside = inside && norm(sub(to_array(get(vpm, v)), c)) < radius;
-    if (inside) doomed.push_back(f);
-  }
-  if (doomed.empty()) return GT::null_halfedge();
-  for (auto f : doomed) CGAL::Euler::remove_face(halfedge(f, pm), pm);
-  for (auto h : halfedges(pm))
-    if (is_border(h, pm) && norm(sub(to_array(get(vpm, target(h, pm))), c)) < 1.5 * radius)
-      return h;
-  return GT::null_halfedge();
-}
-
 /// Discrete mean curvature magnitude at v: |cotangent Laplacian| / (2 x barycentric area).
 template <class PolygonMesh, class VertexPointMap>
 double mean_curvature(const PolygonMesh& pm, VertexPointMap vpm,
