@@ -9,6 +9,8 @@
 #include <CGAL/Surface_mesh.h>
 #include <gtest/gtest.h>
 
+#include "hole_punching.h"
+
 #include <cmath>
 #include <filesystem>
 #include <random>
@@ -22,26 +24,8 @@ using Mesh = CGAL::Surface_mesh<Point>;
 namespace MR = CGAL::Mesh_repair;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
-// Removes the faces whose centroid lies within `radius` of `center` (a disc-shaped hole).
-void punch_hole(Mesh& mesh, const Point& center, double radius) {
-  std::vector<Mesh::Face_index> doomed;
-  for (auto f : mesh.faces()) {
-    double c[3] = {0, 0, 0};
-    for (auto v : vertices_around_face(mesh.halfedge(f), mesh))
-      for (int k = 0; k < 3; ++k) c[k] += mesh.point(v)[k] / 3;
-    const double d = std::sqrt(CGAL::square(c[0] - center.x()) + CGAL::square(c[1] - center.y()) +
-                               CGAL::square(c[2] - center.z()));
-    if (d < radius) doomed.push_back(f);
-  }
-  for (auto f : doomed) CGAL::Euler::remove_face(mesh.halfedge(f), mesh);
-  mesh.collect_garbage();
-}
-
-std::size_t border_cycle_count(const Mesh& mesh) {
-  std::vector<Mesh::Halfedge_index> cycles;
-  PMP::extract_boundary_cycles(mesh, std::back_inserter(cycles));
-  return cycles.size();
-}
+using mesh_repair_test::count_border_cycles;
+using mesh_repair_test::punch_hole;
 
 Mesh sphere_with_holes() {
   Mesh sphere;
@@ -49,12 +33,13 @@ Mesh sphere_with_holes() {
   punch_hole(sphere, Point(1, 0, 0), 0.3);
   punch_hole(sphere, Point(-1, 0, 0), 0.25);
   punch_hole(sphere, Point(0, 0, 1), 0.35);
+  sphere.collect_garbage();
   return sphere;
 }
 
 TEST(AutomaticRepair, SphereWithThreeHolesBecomesClosedAndValid) {
   Mesh mesh = sphere_with_holes();
-  ASSERT_EQ(border_cycle_count(mesh), 3u);
+  ASSERT_EQ(count_border_cycles(mesh), 3u);
   const auto result = MR::automatic_repair(mesh);
   EXPECT_TRUE(result.complete()) << (result.remaining.empty() ? "" : result.remaining.front());
   EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
@@ -128,7 +113,7 @@ TEST(AutomaticRepair, HolesOverTheSizeLimitAreLeftOpenAndListed) {
   EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
   EXPECT_GT(result.holes_too_large, 0u);
   EXPECT_FALSE(result.complete());
-  EXPECT_EQ(border_cycle_count(mesh), result.holes_too_large);
+  EXPECT_EQ(count_border_cycles(mesh), result.holes_too_large);
 }
 
 TEST(AutomaticRepair, KeepsEveryComponentUnlessAskedAndCountsRemovals) {
@@ -156,7 +141,7 @@ TEST(AutomaticRepair, BundledDefectivePartBecomesClosedAndValid) {
   const auto result = MR::automatic_repair(mesh);
   EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
   // The detached zero-area triangle is removed as degenerate; the block is closed.
-  EXPECT_TRUE(CGAL::is_closed(mesh)) << border_cycle_count(mesh) << " border cycles left";
+  EXPECT_TRUE(CGAL::is_closed(mesh)) << count_border_cycles(mesh) << " border cycles left";
   EXPECT_TRUE(result.complete()) << (result.remaining.empty() ? "" : result.remaining.front());
 }
 
@@ -269,7 +254,7 @@ TEST(AutomaticRepair, SelfIntersectionRemovalOptionReducesTheSpikes) {
 
 TEST(FillHoles, APatchMeetingAnotherPartOfTheMeshIsRolledBack) {
   Mesh mesh = overlapping_spheres_with_facing_holes();
-  ASSERT_EQ(border_cycle_count(mesh), 2u);
+  ASSERT_EQ(count_border_cycles(mesh), 2u);
   ASSERT_FALSE(PMP::does_self_intersect(mesh));
   for (auto method : {MR::Fill_method::automatic, MR::Fill_method::liepa}) {
     Mesh filled = mesh;
@@ -279,7 +264,7 @@ TEST(FillHoles, APatchMeetingAnotherPartOfTheMeshIsRolledBack) {
     // The first hole is filled; every attempt on the second crosses the first patch.
     EXPECT_EQ(result.filled, 1u) << MR::to_string(method);
     EXPECT_EQ(result.failed, 1u) << MR::to_string(method);
-    EXPECT_EQ(border_cycle_count(filled), 1u);
+    EXPECT_EQ(count_border_cycles(filled), 1u);
     for (const auto& hole : result.holes) {
       if (!hole.filled) {
         EXPECT_NE(hole.failure.find("self-intersects"), std::string::npos);

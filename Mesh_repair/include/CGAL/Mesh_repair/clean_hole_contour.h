@@ -15,6 +15,9 @@
 #include <CGAL/Mesh_repair/quality.h>
 #include <CGAL/Mesh_repair/visitor.h>
 
+#include <CGAL/Kernel/global_functions.h>
+#include <CGAL/squared_distance_3.h>
+
 #include <algorithm>
 #include <cmath>
 #include <utility>

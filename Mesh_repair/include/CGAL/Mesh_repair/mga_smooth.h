@@ -85,8 +85,8 @@ inline std::vector<std::array<int, 3>> primary_triangles(const Polygon_arrays& m
     const auto& q = mesh.faces[f];
     if (mesh.degree(int(f)) == 3) {
       triangles.push_back({q[0], q[1], q[2]});
-    } else if (length(mesh.points[q[0]] - mesh.points[q[2]]) <=
-               length(mesh.points[q[1]] - mesh.points[q[3]])) {
+    } else if (norm(mesh.points[q[0]] - mesh.points[q[2]]) <=
+               norm(mesh.points[q[1]] - mesh.points[q[3]])) {
       triangles.push_back({q[0], q[1], q[2]});
       triangles.push_back({q[0], q[2], q[3]});
     } else {

@@ -9,11 +9,13 @@
 /// out as an implant (thesis 6.2, implant_patch.h). See doc/shape_prediction.md.
 
 #include <CGAL/Mesh_repair/fill_holes.h>
+#include <CGAL/Mesh_repair/internal/hole_filling/border_cycles.h>
 #include <CGAL/Mesh_repair/parameters.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 
+#include <algorithm>
 #include <unordered_set>
 #include <vector>
 
@@ -67,15 +69,11 @@ Feature_suppression_result<PolygonMesh> suppress_feature(
   result.faces_removed = removed.size();
 
   std::vector<halfedge_descriptor> holes;
-  std::unordered_set<halfedge_descriptor> seen;
-  for (halfedge_descriptor h : halfedges(pm)) {
-    if (!is_border(h, pm) || seen.count(h)) continue;
-    bool opened = false;
-    for (halfedge_descriptor c : halfedges_around_face(h, pm)) {
-      seen.insert(c);
-      opened = opened || !old_border.count(c);
-    }
-    if (opened) holes.push_back(h);
+  for (halfedge_descriptor h : internal::border_cycles(pm)) {
+    const auto cycle = halfedges_around_face(h, pm);
+    if (std::any_of(cycle.begin(), cycle.end(),
+                    [&](halfedge_descriptor c) { return !old_border.count(c); }))
+      holes.push_back(h);
   }
   result.holes_opened = holes.size();
   result.patches.resize(holes.size());

@@ -9,7 +9,7 @@
 /// (element collapse, node elimination and edge swap) applied where they raise quality, and quality
 /// edge flips that clean a primary triangulation. See doc/mga_smooth.md.
 
-#include <CGAL/Mesh_repair/internal/c1_surface/vec3.h>
+#include <CGAL/Mesh_repair/internal/vec3.h>
 #include <CGAL/Mesh_repair/parameters.h>
 #include <CGAL/Mesh_repair/quality.h>
 #include <CGAL/Mesh_repair/visitor.h>
@@ -301,7 +301,7 @@ class Topology_cleaner {
                             d = target(to_d, pm_);
     // Only a short diagonal is collapsed (at most 0.4 of the other): collapsing a diagonal of a
     // long thin quad would move its ends far.
-    if (!(length(point(a) - point(c)) <= 0.4 * length(point(b) - point(d)))) return plan;
+    if (!(norm(point(a) - point(c)) <= 0.4 * norm(point(b) - point(d)))) return plan;
     // Interior quad, b and d keep at least three edges, a and c on no feature or border edge.
     for (halfedge_descriptor k : {h, to_b, to_c, to_d})
       if (is_border(opposite(k, pm_), pm_)) return plan;

@@ -72,7 +72,7 @@ Curvature_deformation_report deform_patches_curvature_variation(
   options.remeasure_weights = false;
   const Fill_constraints<std::array<double, 3>>& constraints = cv_options.constraints;
 
-  std::vector<curvature_variation::Vec3> targets;
+  std::vector<Vec3> targets;
   for (const auto& p : constraints.points) targets.push_back({p[0], p[1], p[2]});
   double spacing = constraints.polyline_spacing;
   if (spacing <= 0 && !constraints.polylines.empty()) {

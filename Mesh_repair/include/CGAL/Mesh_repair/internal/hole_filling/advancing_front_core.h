@@ -451,9 +451,7 @@ class Advancing_front {
     Tangent_frame f;
     f.origin = points_[v];
     f.n = normal(v);
-    const Vec3 helper = std::abs(f.n[0]) < 0.6 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
-    f.u = normalized(cross(f.n, helper));
-    f.v = cross(f.n, f.u);
+    tangent_frame(f.n, f.u, f.v);
     return f;
   }
 

@@ -275,7 +275,7 @@ class Node_smoother {
     double edge_length = 0;
     for (const auto& element : star.elements()) {
       normal += normalized(element.reference_normal);
-      edge_length += length(mesh_.points[element.ring[1]] - origin);
+      edge_length += norm(mesh_.points[element.ring[1]] - origin);
     }
     edge_length /= double(star.elements().size());
     Vec3 t1, t2;

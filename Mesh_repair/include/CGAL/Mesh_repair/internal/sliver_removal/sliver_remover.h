@@ -14,6 +14,8 @@
 #include <CGAL/Mesh_repair/quality.h>
 #include <CGAL/Mesh_repair/visitor.h>
 
+#include <CGAL/Kernel/global_functions.h>
+#include <CGAL/squared_distance_3.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
