@@ -43,7 +43,7 @@ int main(int argc, char** argv) {
   if (argc > 1) MR::add_soup_repair_report(report, soup, mesh);
 
   std::cout << MR::summary(report) << '\n';
-  MR::internal::Json_writer json(std::cout);
+  MR::Json_writer json(std::cout);
   MR::write_json(json, report);
   return MR::counts(report).any() ? 1 : 0;
 }

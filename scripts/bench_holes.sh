@@ -57,6 +57,10 @@ else
 fi
 
 start=$(date +%s)
+started=$(date -u '+%Y-%m-%d %H:%M UTC')
+load=$(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null || echo unknown)
+commit=$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)
+git -C "$root" diff --quiet HEAD -- 2>/dev/null || commit="$commit with uncommitted changes"
 "$tool" bench "${args[@]}"
 seconds=$(($(date +%s) - start))
 ((quick)) && exit 0
@@ -75,8 +79,9 @@ command_line=${command_line//$root\//}
 {
   echo "## Hole filling fidelity (mesh_repair bench holes)"
   echo
-  echo "Regenerate with \`scripts/bench_holes.sh\` ($seconds s wall-clock on the shared 2-core"
-  echo "machine). Command (paths relative to the repository):"
+  echo "Measured $started at commit \`$commit\`. Regenerate with \`scripts/bench_holes.sh\`"
+  echo "($seconds s wall-clock on the 2-core machine, load average $load at the start). Command"
+  echo "(paths relative to the repository):"
   echo
   echo '```'
   echo "$command_line"

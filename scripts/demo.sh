@@ -1,14 +1,24 @@
 #!/usr/bin/env bash
 # The main job on a fresh Debian 12 machine: installs what is missing, builds Release, then runs
 # mesh_repair on the bundled defective CAD part (data/demo/defective_part.off): prints the defect
-# report and writes the repaired mesh to build/demo/.
+# report and writes the repaired mesh to build/demo/ (the build folder is $MESH_REPAIR_BUILD_DIR
+# when set, as for scripts/build.sh).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+build_dir=${MESH_REPAIR_BUILD_DIR:-$root/build}
 "$root/scripts/setup.sh"
-"$root/scripts/build.sh" --target mesh_repair -DMESH_REPAIR_BUILD_TESTS=OFF -DMESH_REPAIR_BUILD_EXAMPLES=OFF -DMESH_REPAIR_BUILD_BENCHMARKS=OFF
-tool="$root/build/bin/mesh_repair"
+# Only the tool is built. On a fresh build/ the tests, examples and benchmarks are configured off
+# (a quicker configure, and no GoogleTest needed); an existing build/ keeps its options (after
+# scripts/test.sh, they stay on), so neither script undoes the other.
+options=(-DMESH_REPAIR_BUILD_CLI=ON)
+if [[ ! -f "$build_dir/CMakeCache.txt" ]]; then
+  options+=(-DMESH_REPAIR_BUILD_TESTS=OFF -DMESH_REPAIR_BUILD_EXAMPLES=OFF
+            -DMESH_REPAIR_BUILD_BENCHMARKS=OFF)
+fi
+"$root/scripts/build.sh" --target mesh_repair "${options[@]}"
+tool="$build_dir/bin/mesh_repair"
 input="$root/data/demo/defective_part.off"
-out="$root/build/demo"
+out="$build_dir/demo"
 mkdir -p "$out"
 echo
 echo "== mesh_repair check $input"

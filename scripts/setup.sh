@@ -1,11 +1,24 @@
 #!/usr/bin/env bash
 # Installs the Debian packages Mesh_repair needs, only those that are missing.
-# Usage: scripts/setup.sh [--with-plots]   (--with-plots adds python3-matplotlib for the bench plots)
+# Usage: scripts/setup.sh [--with-plots] [--with-format] [--with-python]
+#   --with-plots   adds python3-matplotlib for the bench plots
+#   --with-format  adds clang-format for scripts/check_format.sh (CI)
+#   --with-python  adds pybind11-dev, python3-numpy and python3-pytest for python/ and its tests
 set -euo pipefail
 
-packages=(cmake g++ make libcgal-dev libeigen3-dev libboost-dev libgmp-dev libmpfr-dev
+packages=(cmake g++ make libcgal-dev libopenmesh-dev libeigen3-dev libboost-dev libgmp-dev libmpfr-dev
           libtbb-dev libgtest-dev googletest libbenchmark-dev)
-if [[ "${1:-}" == "--with-plots" ]]; then packages+=(python3-matplotlib); fi
+for arg in "$@"; do
+  case "$arg" in
+    --with-plots) packages+=(python3-matplotlib) ;;
+    --with-format) packages+=(clang-format) ;;
+    --with-python) packages+=(pybind11-dev python3-numpy python3-pytest) ;;
+    *)
+      echo "setup: unknown option $arg (use --with-plots, --with-format, --with-python)" >&2
+      exit 2
+      ;;
+  esac
+done
 
 missing=()
 for p in "${packages[@]}"; do

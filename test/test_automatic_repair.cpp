@@ -9,9 +9,13 @@
 #include <CGAL/Surface_mesh.h>
 #include <gtest/gtest.h>
 
+#include "hole_punching.h"
+
 #include <cmath>
 #include <filesystem>
 #include <random>
+#include <string>
+#include <vector>
 
 namespace {
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -20,26 +24,8 @@ using Mesh = CGAL::Surface_mesh<Point>;
 namespace MR = CGAL::Mesh_repair;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
-// Removes the faces whose centroid lies within `radius` of `center` (a disc-shaped hole).
-void punch_hole(Mesh& mesh, const Point& center, double radius) {
-  std::vector<Mesh::Face_index> doomed;
-  for (auto f : mesh.faces()) {
-    double c[3] = {0, 0, 0};
-    for (auto v : vertices_around_face(mesh.halfedge(f), mesh))
-      for (int k = 0; k < 3; ++k) c[k] += mesh.point(v)[k] / 3;
-    const double d = std::sqrt(CGAL::square(c[0] - center.x()) + CGAL::square(c[1] - center.y()) +
-                               CGAL::square(c[2] - center.z()));
-    if (d < radius) doomed.push_back(f);
-  }
-  for (auto f : doomed) CGAL::Euler::remove_face(mesh.halfedge(f), mesh);
-  mesh.collect_garbage();
-}
-
-std::size_t border_cycle_count(const Mesh& mesh) {
-  std::vector<Mesh::Halfedge_index> cycles;
-  PMP::extract_boundary_cycles(mesh, std::back_inserter(cycles));
-  return cycles.size();
-}
+using mesh_repair_test::count_border_cycles;
+using mesh_repair_test::punch_hole;
 
 Mesh sphere_with_holes() {
   Mesh sphere;
@@ -47,12 +33,13 @@ Mesh sphere_with_holes() {
   punch_hole(sphere, Point(1, 0, 0), 0.3);
   punch_hole(sphere, Point(-1, 0, 0), 0.25);
   punch_hole(sphere, Point(0, 0, 1), 0.35);
+  sphere.collect_garbage();
   return sphere;
 }
 
 TEST(AutomaticRepair, SphereWithThreeHolesBecomesClosedAndValid) {
   Mesh mesh = sphere_with_holes();
-  ASSERT_EQ(border_cycle_count(mesh), 3u);
+  ASSERT_EQ(count_border_cycles(mesh), 3u);
   const auto result = MR::automatic_repair(mesh);
   EXPECT_TRUE(result.complete()) << (result.remaining.empty() ? "" : result.remaining.front());
   EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
@@ -66,13 +53,67 @@ TEST(AutomaticRepair, SphereWithThreeHolesBecomesClosedAndValid) {
   }
 }
 
+// Records the steps a visitor sees: every start has its end, in nesting order.
+struct Step_log {
+  std::vector<std::string> open;
+  std::size_t starts = 0, ends = 0, unbalanced = 0, progress_calls = 0;
+  std::size_t cancel_after = std::size_t(-1);
+  void start_step(const char* name) {
+    open.push_back(name);
+    ++starts;
+  }
+  bool progress(double) { return ++progress_calls < cancel_after; }
+  void end_step(const char* name) {
+    ++ends;
+    if (open.empty() || open.back() != name) ++unbalanced;
+    if (!open.empty()) open.pop_back();
+  }
+};
+
+TEST(AutomaticRepair, EveryStepReachesTheVisitorBalancedEvenWhenCancelled) {
+  Mesh mesh = sphere_with_holes();
+  Step_log log;
+  const auto result = MR::automatic_repair(mesh, MR::parameters::visitor(std::ref(log)));
+  EXPECT_GE(log.starts, result.steps.size());  // each step, and the operators' own steps inside
+  EXPECT_EQ(log.starts, log.ends);
+  EXPECT_EQ(log.unbalanced, 0u);
+  EXPECT_TRUE(log.open.empty());
+
+  Mesh cancelled_mesh = sphere_with_holes();
+  Step_log stopper;
+  stopper.cancel_after = 2;
+  const auto cancelled =
+      MR::automatic_repair(cancelled_mesh, MR::parameters::visitor(std::ref(stopper)));
+  EXPECT_TRUE(cancelled.cancelled);
+  EXPECT_FALSE(cancelled.complete());
+  EXPECT_EQ(stopper.starts, stopper.ends);
+  EXPECT_EQ(stopper.unbalanced, 0u);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(cancelled_mesh));
+}
+
+// A visitor passed by value is copied (the caller's object does not change); by std::ref it is
+// used in place.
+TEST(AutomaticRepair, VisitorsWorkByValueAndByReference) {
+  Mesh by_value = sphere_with_holes();
+  Step_log copied;
+  MR::automatic_repair(by_value, MR::parameters::visitor(copied));
+  EXPECT_EQ(copied.starts, 0u);
+  EXPECT_TRUE(CGAL::is_closed(by_value));
+
+  Mesh by_reference = sphere_with_holes();
+  Step_log used;
+  MR::automatic_repair(by_reference, MR::parameters::visitor(std::ref(used)));
+  EXPECT_GT(used.starts, 0u);
+  EXPECT_TRUE(CGAL::is_closed(by_reference));
+}
+
 TEST(AutomaticRepair, HolesOverTheSizeLimitAreLeftOpenAndListed) {
   Mesh mesh = sphere_with_holes();
   const auto result = MR::automatic_repair(mesh, MR::parameters::max_hole_size(0.2));
   EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
   EXPECT_GT(result.holes_too_large, 0u);
   EXPECT_FALSE(result.complete());
-  EXPECT_EQ(border_cycle_count(mesh), result.holes_too_large);
+  EXPECT_EQ(count_border_cycles(mesh), result.holes_too_large);
 }
 
 TEST(AutomaticRepair, KeepsEveryComponentUnlessAskedAndCountsRemovals) {
@@ -100,7 +141,7 @@ TEST(AutomaticRepair, BundledDefectivePartBecomesClosedAndValid) {
   const auto result = MR::automatic_repair(mesh);
   EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
   // The detached zero-area triangle is removed as degenerate; the block is closed.
-  EXPECT_TRUE(CGAL::is_closed(mesh)) << border_cycle_count(mesh) << " border cycles left";
+  EXPECT_TRUE(CGAL::is_closed(mesh)) << count_border_cycles(mesh) << " border cycles left";
   EXPECT_TRUE(result.complete()) << (result.remaining.empty() ? "" : result.remaining.front());
 }
 
@@ -213,7 +254,7 @@ TEST(AutomaticRepair, SelfIntersectionRemovalOptionReducesTheSpikes) {
 
 TEST(FillHoles, APatchMeetingAnotherPartOfTheMeshIsRolledBack) {
   Mesh mesh = overlapping_spheres_with_facing_holes();
-  ASSERT_EQ(border_cycle_count(mesh), 2u);
+  ASSERT_EQ(count_border_cycles(mesh), 2u);
   ASSERT_FALSE(PMP::does_self_intersect(mesh));
   for (auto method : {MR::Fill_method::automatic, MR::Fill_method::liepa}) {
     Mesh filled = mesh;
@@ -223,7 +264,7 @@ TEST(FillHoles, APatchMeetingAnotherPartOfTheMeshIsRolledBack) {
     // The first hole is filled; every attempt on the second crosses the first patch.
     EXPECT_EQ(result.filled, 1u) << MR::to_string(method);
     EXPECT_EQ(result.failed, 1u) << MR::to_string(method);
-    EXPECT_EQ(border_cycle_count(filled), 1u);
+    EXPECT_EQ(count_border_cycles(filled), 1u);
     for (const auto& hole : result.holes) {
       if (!hole.filled) {
         EXPECT_NE(hole.failure.find("self-intersects"), std::string::npos);

@@ -3,6 +3,7 @@
 #include <CGAL/Mesh_repair/generators.h>
 #include <CGAL/Mesh_repair/hole_filling/curvature_variation.h>
 #include <CGAL/Mesh_repair/internal/curvature_variation/measures.h>
+#include <CGAL/Mesh_repair/internal/hole_benchmark/punch.h>
 #include <CGAL/Mesh_repair/internal/curvature_variation/multifrontal_cholesky.h>
 #include <CGAL/Mesh_repair/visitor.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
@@ -23,6 +24,7 @@ using Mesh = CGAL::Surface_mesh<Point>;
 using halfedge_descriptor = boost::graph_traits<Mesh>::halfedge_descriptor;
 namespace MR = CGAL::Mesh_repair;
 namespace cv = CGAL::Mesh_repair::internal::curvature_variation;
+using CGAL::Mesh_repair::internal::hole_benchmark::punch_ball_hole;
 
 std::size_t border_cycles(const Mesh& mesh) {
   std::vector<halfedge_descriptor> cycles;
@@ -46,7 +48,7 @@ double sphere_einf(const Mesh& mesh, const MR::Fill_patch<Mesh>& patch) {
 Mesh sphere_with_cap_hole(halfedge_descriptor& border) {
   Mesh mesh;
   MR::make_sphere(mesh, Point(0, 0, 0), 1.0, 4);
-  border = cv::punch_ball_hole(mesh, Point(0, 0, 1), 0.6);
+  border = punch_ball_hole(mesh, Point(0, 0, 1), 0.6);
   return mesh;
 }
 
@@ -55,7 +57,7 @@ TEST(CurvatureVariation, PlaneHoleStaysPlanarWithForces) {
     Mesh mesh;
     MR::make_height_field<Mesh, Point>(mesh, -1, 1, -1, 1, 20, 20,
                                        [](double, double) { return 0.0; });
-    const halfedge_descriptor border = cv::punch_ball_hole(mesh, Point(0.05, 0.02, 0), 0.5);
+    const halfedge_descriptor border = punch_ball_hole(mesh, Point(0.05, 0.02, 0), 0.5);
     ASSERT_EQ(border_cycles(mesh), 2u);
     MR::Fill_patch<Mesh> patch;
     const auto report = MR::fill_hole_curvature_variation(
@@ -112,8 +114,8 @@ TEST(CurvatureVariation, TwoDisjointHolesSolvedTogetherEqualSolvedSeparately) {
   auto make = [](std::vector<halfedge_descriptor>& borders) {
     Mesh mesh;
     MR::make_sphere(mesh, Point(0, 0, 0), 1.0, 4);
-    borders.push_back(cv::punch_ball_hole(mesh, Point(0, 0, 1), 0.5));
-    borders.push_back(cv::punch_ball_hole(mesh, Point(0, 0, -1), 0.5));
+    borders.push_back(punch_ball_hole(mesh, Point(0, 0, 1), 0.5));
+    borders.push_back(punch_ball_hole(mesh, Point(0, 0, -1), 0.5));
     return mesh;
   };
   std::vector<halfedge_descriptor> borders;
@@ -291,7 +293,7 @@ TEST(CurvatureVariation, RemeasuredWeightsBringALargeSphereCapCloserToTheSphere)
   for (int remeasure = 0; remeasure < 2; ++remeasure) {
     Mesh mesh;
     MR::make_sphere(mesh, Point(0, 0, 0), 1.0, 4);
-    const halfedge_descriptor border = cv::punch_ball_hole(mesh, Point(0, 0, 1), 0.8);
+    const halfedge_descriptor border = punch_ball_hole(mesh, Point(0, 0, 1), 0.8);
     ASSERT_EQ(border_cycles(mesh), 1u);
     std::vector<MR::Fill_patch<Mesh>> patches(1);
     CGAL::Polygon_mesh_processing::triangulate_and_refine_hole(
@@ -321,7 +323,7 @@ TEST(CurvatureVariation, InitialGridRelaxationIsTangentialAndKeepsTheContour) {
   Mesh mesh;
   MR::make_height_field<Mesh, Point>(mesh, -1, 1, -1, 1, 20, 20,
                                      [](double, double) { return 0.0; });
-  const halfedge_descriptor border = cv::punch_ball_hole(mesh, Point(0.05, 0.02, 0), 0.5);
+  const halfedge_descriptor border = punch_ball_hole(mesh, Point(0.05, 0.02, 0), 0.5);
   ASSERT_EQ(border_cycles(mesh), 2u);
   std::vector<Point> contour;
   for (auto h : CGAL::halfedges_around_face(border, mesh))
@@ -333,14 +335,15 @@ TEST(CurvatureVariation, InitialGridRelaxationIsTangentialAndKeepsTheContour) {
   auto smallest_angle = [&]() {
     double smallest = 180;
     for (auto f : patch.faces) {
-      std::vector<cv::Vec> p;
+      std::vector<MR::internal::Vec3> p;
       for (auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
-        p.push_back(cv::vec(mesh.point(v)));
+        p.push_back(MR::internal::to_array(mesh.point(v)));
       for (int k = 0; k < 3; ++k) {
-        const cv::Vec u = cv::minus(p[(k + 1) % 3], p[k]), w = cv::minus(p[(k + 2) % 3], p[k]);
-        smallest = std::min(smallest,
-                            std::atan2(cv::length(cv::cross_product(u, w)), cv::dot_product(u, w)) *
-                                180.0 / CGAL_PI);
+        const MR::internal::Vec3 u = MR::internal::sub(p[(k + 1) % 3], p[k]),
+                                 w = MR::internal::sub(p[(k + 2) % 3], p[k]);
+        smallest = std::min(smallest, std::atan2(MR::internal::norm(MR::internal::cross(u, w)),
+                                                 MR::internal::dot(u, w)) *
+                                          180.0 / CGAL_PI);
       }
     }
     return smallest;

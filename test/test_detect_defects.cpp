@@ -411,13 +411,20 @@ TEST(DetectDefects, VisitorSeesEveryStepAndCanCancel) {
   const auto partial = MR::detect_defects(mesh, CGAL::parameters::visitor(std::ref(stopper)));
   EXPECT_TRUE(partial.cancelled);
   EXPECT_EQ(partial.border_cycles.size(), 1u);  // steps before the cancellation are kept
+
+  // By value the visitor is copied: it runs, and the caller's object stays as it was.
+  Counting_visitor copied;
+  copied.cancel_at_third = true;
+  const auto by_value = MR::detect_defects(mesh, CGAL::parameters::visitor(copied));
+  EXPECT_TRUE(by_value.cancelled);
+  EXPECT_EQ(copied.steps, 0);
 }
 
 TEST(DetectDefects, JsonHasTheTopLevelCounts) {
   const auto c = cube(true);
   const auto report = MR::detect_defects(mesh_from(c.first, c.second));
   std::ostringstream text;
-  MR::internal::Json_writer json(text);
+  MR::Json_writer json(text);
   MR::write_json(json, report);
   for (const char* key :
        {"\"vertices\": 8", "\"faces\": 10", "\"border_cycles\": 1", "\"non_manifold_edges\": 0",

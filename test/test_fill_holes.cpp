@@ -1,6 +1,7 @@
 // Hole filling: the dispatcher, advancing front, CGAL's Liepa, ring holes, pinched borders, the
 // exact patch check and its rollback (fill_holes.h).
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Mesh_repair/detect_defects.h>
 #include <CGAL/Mesh_repair/fill_holes.h>
 #include <CGAL/Mesh_repair/generators.h>
 #include <CGAL/Mesh_repair/hole_benchmark.h>
@@ -423,6 +424,49 @@ TEST(FillHoles, RingHoleDetectionCanBeTurnedOff) {
       mesh, MR::parameters::fill_method(MR::Fill_method::liepa).detect_ring_holes(false));
   EXPECT_EQ(result.holes.size(), 2u);
   for (const auto& hole : result.holes) EXPECT_EQ(hole.island_cycles, 0u);
+}
+
+/// A flat 6 x 6 grid (z = 0, facing +z) without its middle 2 x 2 squares, and a unit square
+/// patch floating in that hole, facing +z (`island_faces_up`) or turned over (-z).
+Mesh flat_hole_with_island(bool island_faces_up) {
+  Mesh mesh;
+  std::vector<std::vector<Mesh::Vertex_index>> grid(7, std::vector<Mesh::Vertex_index>(7));
+  for (int i = 0; i <= 6; ++i)
+    for (int j = 0; j <= 6; ++j) grid[i][j] = mesh.add_vertex(Point(i, j, 0));
+  for (int i = 0; i < 6; ++i) {
+    for (int j = 0; j < 6; ++j) {
+      if (i >= 2 && i < 4 && j >= 2 && j < 4) continue;
+      mesh.add_face(grid[i][j], grid[i + 1][j], grid[i + 1][j + 1]);
+      mesh.add_face(grid[i][j], grid[i + 1][j + 1], grid[i][j + 1]);
+    }
+  }
+  const auto a = mesh.add_vertex(Point(2.5, 2.5, 0)), b = mesh.add_vertex(Point(3.5, 2.5, 0)),
+             c = mesh.add_vertex(Point(3.5, 3.5, 0)), d = mesh.add_vertex(Point(2.5, 3.5, 0));
+  if (island_faces_up) {
+    mesh.add_face(a, b, c);
+    mesh.add_face(a, c, d);
+  } else {
+    mesh.add_face(a, c, b);
+    mesh.add_face(a, d, c);
+  }
+  return mesh;
+}
+
+// Detection reports the islands that filling bridges: one test (thesis 4.4) decides both. An
+// island facing the surface's way is one; a turned-over island is an orientation defect that no
+// strip joins without a fold, so it is neither reported nor bridged.
+TEST(FillHoles, DetectionReportsTheIslandsThatFillingBridges) {
+  for (const bool faces_up : {true, false}) {
+    Mesh mesh = flat_hole_with_island(faces_up);
+    ASSERT_EQ(count_border_cycles(mesh), 3u);  // the grid's outer border, the hole, the island
+    const std::size_t reported = MR::counts(MR::detect_defects(mesh)).ring_hole_islands;
+    const MR::Fill_result result =
+        MR::fill_holes(mesh, MR::parameters::fill_method(MR::Fill_method::liepa));
+    std::size_t bridged = 0;
+    for (const auto& hole : result.holes) bridged += hole.island_cycles;
+    EXPECT_EQ(reported, bridged) << (faces_up ? "island facing up" : "island turned over");
+    EXPECT_EQ(reported, faces_up ? 1u : 0u);
+  }
 }
 
 TEST(FillHoles, SelectionBySizeLeavesTheLargeHoleOpen) {

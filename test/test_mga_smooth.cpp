@@ -540,11 +540,11 @@ Edge_continuity edge_continuity(const Mesh& mesh, const G1_surface& surface) {
     for (double u = 0.1; u < 0.95; u += 0.1) {
       const Vec3 gap =
           patch_point(surface, t0, a, b, c0, u, 0) - patch_point(surface, t1, a, b, c1, u, 0);
-      result.largest_gap = std::max(result.largest_gap, MR::internal::length(gap));
+      result.largest_gap = std::max(result.largest_gap, MR::internal::norm(gap));
       const Vec3 n0 = normal_on_edge(surface, t0, a, b, c0, u);
       const Vec3 n1 = normal_on_edge(surface, t1, a, b, c1, u);
       result.largest_sine =
-          std::max(result.largest_sine, MR::internal::length(MR::internal::cross(n0, n1)));
+          std::max(result.largest_sine, MR::internal::norm(MR::internal::cross(n0, n1)));
     }
   }
   return result;

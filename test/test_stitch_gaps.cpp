@@ -302,7 +302,7 @@ TEST(GlueBorderPairs, RefusesAPairThatWouldDuplicateAnInteriorEdge) {
 
 TEST(PointKdTree, FindsExactlyThePointsWithinTheRadius) {
   CGAL::Random random(4);
-  std::vector<std::array<double, 3>> points;
+  std::vector<MR::internal::Point_kd_tree::Point> points;
   for (int i = 0; i < 3000; ++i)
     points.push_back({random.get_double(0, 10), random.get_double(0, 1), 0.5 * (i % 3)});
   points.push_back(points[17]);  // a duplicate

@@ -12,6 +12,7 @@
 #include <CGAL/Mesh_repair/generators.h>
 #include <CGAL/Mesh_repair/hole_filling/curvature_variation.h>
 #include <CGAL/Mesh_repair/internal/curvature_variation/measures.h>
+#include <CGAL/Mesh_repair/internal/hole_benchmark/punch.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/fair.h>
@@ -40,6 +41,7 @@ using Tree =
 namespace MR = CGAL::Mesh_repair;
 namespace cv = CGAL::Mesh_repair::internal::curvature_variation;
 namespace PMP = CGAL::Polygon_mesh_processing;
+using CGAL::Mesh_repair::internal::hole_benchmark::punch_ball_hole;
 
 struct Method {
   std::string name;
@@ -77,7 +79,7 @@ std::vector<halfedge_descriptor> punch_holes(Mesh& mesh, int count, double radiu
     for (const Point& o : centers) far = far && CGAL::squared_distance(c, o) > 9 * radius * radius;
     if (!far) continue;
     Mesh trial = mesh;
-    const halfedge_descriptor h = cv::punch_ball_hole(trial, c, radius);
+    const halfedge_descriptor h = punch_ball_hole(trial, c, radius);
     if (h == boost::graph_traits<Mesh>::null_halfedge() || !CGAL::is_valid_polygon_mesh(trial))
       continue;
     std::size_t length = 0;

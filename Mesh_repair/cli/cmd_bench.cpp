@@ -9,7 +9,7 @@
 
 #include <CGAL/Mesh_repair/fill_holes.h>
 #include <CGAL/Mesh_repair/hole_benchmark.h>
-#include <CGAL/Mesh_repair/internal/json.h>
+#include <CGAL/Mesh_repair/json_writer.h>
 #include <CGAL/Mesh_repair/io.h>
 
 #include <CGAL/Polygon_mesh_processing/border.h>
@@ -207,7 +207,7 @@ void write_row(std::ostream& out, const Case_context& context, const Options& op
                double radius, unsigned int seed, std::size_t hole_index, const Hole& hole,
                const Method& method, const MR::Hole_fill_report& report,
                const MR::Hole_fill_metrics& m, bool mesh_closed, bool mesh_valid, Row& row) {
-  MR::internal::Json_writer json(out, false);
+  MR::Json_writer json(out, false);
   json.begin_object();
   json.field("mesh", context.name).field("analytic", context.analytic);
   json.field("shape", MR::to_string(options.shape)).field("radius", radius).field("seed", seed);

@@ -58,7 +58,7 @@ int run_check(const std::vector<std::string>& args) {
 
   if (arguments.has("--json")) {
     std::ostringstream text;
-    MR::internal::Json_writer json(text);
+    MR::Json_writer json(text);
     MR::write_json(json, report);
     save_text(arguments.get("--json"), text.str());
   }

@@ -169,7 +169,7 @@ int run_fill(const std::vector<std::string>& args) {
   if (!arguments.has("--quiet")) print_summary(result, closed);
   if (arguments.has("--report")) {
     std::ostringstream text;
-    MR::internal::Json_writer json(text);
+    MR::Json_writer json(text);
     json.begin_object();
     json.key("input").value(input);
     json.key("output").value(arguments.get("-o"));

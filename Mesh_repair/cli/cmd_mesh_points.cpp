@@ -6,15 +6,10 @@
 #include "commands.h"
 #include "common.h"
 
-#include <CGAL/Mesh_repair/internal/json.h>
-#include <CGAL/Mesh_repair/mga_smooth.h>
-#include <CGAL/Mesh_repair/triangles_to_quads.h>
+#include <CGAL/Mesh_repair/json_writer.h>
+#include <CGAL/Mesh_repair/mesh_points.h>
 
-#include <CGAL/Advancing_front_surface_reconstruction.h>
 #include <CGAL/IO/read_points.h>
-#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
-#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
-#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 
 #include <iostream>
 #include <sstream>
@@ -31,49 +26,38 @@ const char* const mesh_points_help =
 
 int run_mesh_points(const std::vector<std::string>& args) {
   namespace MR = CGAL::Mesh_repair;
-  namespace PMP = CGAL::Polygon_mesh_processing;
   Arguments arguments(args, {"--quads", "--no-smooth", "--quiet"},
                       {"-o", "--iterations", "--seed", "--threads", "--feature-angle", "--report"});
   const std::string input = arguments.single_input(mesh_points_help);
   const std::string output = arguments.get("-o");
   if (output.empty()) throw Input_error("mesh-points: -o OUT is required");
   const int iterations = int(arguments.get_int("--iterations", 3));
-  const int threads = int(arguments.get_int("--threads", 1));
+  const int threads = int(arguments.get_int("--threads", 0));
   const unsigned seed = unsigned(arguments.get_int("--seed", 0));
   const double feature_angle = arguments.get_double("--feature-angle", 120.0);
-  if (iterations < 0 || threads < 1) throw Input_error("mesh-points: bad --iterations/--threads");
+  if (iterations < 0 || threads < 0) throw Input_error("mesh-points: bad --iterations/--threads");
 
   std::vector<Point> points;
   if (!CGAL::IO::read_points(input, std::back_inserter(points)) || points.size() < 3)
     throw Input_error("mesh-points: cannot read at least three points from " + input);
 
   const auto start = std::chrono::steady_clock::now();
-  std::vector<std::array<std::size_t, 3>> facets;
-  CGAL::advancing_front_surface_reconstruction(points.begin(), points.end(),
-                                               std::back_inserter(facets));
-  if (facets.empty()) throw Input_error("mesh-points: the reconstruction produced no triangle");
-  std::vector<std::vector<std::size_t>> polygons;
-  for (const auto& f : facets) polygons.push_back({f[0], f[1], f[2]});
-  PMP::repair_polygon_soup(points, polygons);
-  PMP::orient_polygon_soup(points, polygons);
   Mesh mesh;
-  PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
-  const double reconstruction_seconds = seconds_since(start);
-
-  const auto flips =
-      MR::flip_edges_for_quality(mesh, MR::parameters::feature_angle_deg(feature_angle));
-  MR::Quad_conversion_result conversion;
-  if (arguments.has("--quads"))
-    conversion = MR::triangles_to_quads(mesh, MR::parameters::feature_angle_deg(feature_angle));
-  MR::Mga_smooth_result smoothing;
   Progress_bar bar(progress_wanted(arguments));
-  if (!arguments.has("--no-smooth"))
-    smoothing = MR::mga_smooth(mesh, MR::parameters::feature_angle_deg(feature_angle)
-                                         .number_of_threads(threads)
-                                         .random_seed(seed)
-                                         .number_of_iterations(iterations)
-                                         .surface_tangent_scale(1.0)
-                                         .visitor(std::ref(bar)));
+  const MR::Mesh_points_result meshed = MR::mesh_points(
+      points, mesh,
+      MR::parameters::feature_angle_deg(feature_angle)
+          .convert_to_quads(arguments.has("--quads"))
+          .number_of_iterations(arguments.has("--no-smooth") ? 0u : unsigned(iterations))
+          .number_of_threads(threads)
+          .random_seed(seed)
+          .visitor(std::ref(bar)));
+  if (meshed.reconstructed_faces == 0)
+    throw Input_error("mesh-points: the reconstruction produced no triangle");
+  const double reconstruction_seconds = meshed.reconstruction_seconds;
+  const MR::Edge_flip_result& flips = meshed.flips;
+  const MR::Quad_conversion_result& conversion = meshed.quads;
+  const MR::Mga_smooth_result& smoothing = meshed.smoothing;
   const double seconds = seconds_since(start);
   save_mesh(output, mesh);
 
@@ -85,7 +69,7 @@ int run_mesh_points(const std::vector<std::string>& args) {
             << seconds << " s\n";
   if (arguments.has("--report")) {
     std::ostringstream text;
-    MR::internal::Json_writer json(text);
+    MR::Json_writer json(text);
     json.begin_object();
     json.field("input", input).field("output", output).field("points", points.size());
     json.field("vertices", mesh.number_of_vertices()).field("faces", mesh.number_of_faces());

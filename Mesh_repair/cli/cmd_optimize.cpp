@@ -5,7 +5,7 @@
 #include "commands.h"
 #include "common.h"
 
-#include <CGAL/Mesh_repair/internal/json.h>
+#include <CGAL/Mesh_repair/json_writer.h>
 #include <CGAL/Mesh_repair/io.h>
 #include <CGAL/Mesh_repair/optimize_mesh.h>
 #include <CGAL/Mesh_repair/quality.h>
@@ -32,7 +32,7 @@ const char* const optimize_help =
 
 namespace {
 
-void write_quality(CGAL::Mesh_repair::internal::Json_writer& json, const std::string& name,
+void write_quality(CGAL::Mesh_repair::Json_writer& json, const std::string& name,
                    const CGAL::Mesh_repair::Quality_statistics& q) {
   json.key(name).begin_object();
   json.field("triangles", q.triangles).field("min_angle_deg", q.min_angle_deg);
@@ -41,7 +41,7 @@ void write_quality(CGAL::Mesh_repair::internal::Json_writer& json, const std::st
   json.end_object();
 }
 
-void write_result(CGAL::Mesh_repair::internal::Json_writer& json,
+void write_result(CGAL::Mesh_repair::Json_writer& json,
                   const CGAL::Mesh_repair::Optimization_result& r) {
   json.key("optimization").begin_object();
   json.field("input_faces", r.input_faces).field("output_faces", r.output_faces);
@@ -131,7 +131,7 @@ int run_optimize(const std::vector<std::string>& args) {
   }
   if (arguments.has("--report")) {
     std::ostringstream text;
-    MR::internal::Json_writer json(text);
+    MR::Json_writer json(text);
     json.begin_object();
     json.field("input", input).field("output", output).field("mode", mode_name);
     json.key("soup");

@@ -124,7 +124,7 @@ std::string report_json(const std::string& input, const std::string& output,
                         const CGAL::Mesh_repair::Defect_report& after,
                         const CGAL::Mesh_repair::Repair_result& result, double seconds) {
   std::ostringstream text;
-  CGAL::Mesh_repair::internal::Json_writer json(text);
+  CGAL::Mesh_repair::Json_writer json(text);
   json.begin_object().field("input", input).field("output", output).field("seconds", seconds);
   json.key("soup_repair");
   CGAL::Mesh_repair::write_json(json, soup);

@@ -6,7 +6,7 @@
 #include "commands.h"
 #include "common.h"
 
-#include <CGAL/Mesh_repair/internal/json.h>
+#include <CGAL/Mesh_repair/json_writer.h>
 #include <CGAL/Mesh_repair/io.h>
 #include <CGAL/Mesh_repair/mga_smooth.h>
 #include <CGAL/Mesh_repair/triangles_to_quads.h>
@@ -89,7 +89,7 @@ double max_distance_to(const Mesh& mesh, const Mesh& reference) {
   return largest;
 }
 
-void write_quality(MR::internal::Json_writer& json, const std::string& name, const Quality& q) {
+void write_quality(MR::Json_writer& json, const std::string& name, const Quality& q) {
   json.key(name).begin_object();
   json.field("worst", q.worst).field("mean", q.mean);
   json.field("triangles", q.triangles).field("quads", q.quads);
@@ -170,7 +170,7 @@ int run_smooth(const std::vector<std::string>& args) {
             << distance / diagonal << " of the diagonal), " << seconds << " s\n";
   if (arguments.has("--report")) {
     std::ostringstream text;
-    MR::internal::Json_writer json(text);
+    MR::Json_writer json(text);
     json.begin_object();
     json.field("input", input).field("output", output).field("method", method);
     json.field("quads", quads).field("iterations", iterations).field("seed", seed);

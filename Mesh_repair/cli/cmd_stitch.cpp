@@ -5,7 +5,7 @@
 #include "commands.h"
 #include "common.h"
 
-#include <CGAL/Mesh_repair/internal/json.h>
+#include <CGAL/Mesh_repair/json_writer.h>
 #include <CGAL/Mesh_repair/io.h>
 #include <CGAL/Mesh_repair/stitch_gaps.h>
 
@@ -69,7 +69,7 @@ int run_stitch(const std::vector<std::string>& args) {
   }
   if (arguments.has("--report")) {
     std::ostringstream text;
-    MR::internal::Json_writer json(text);
+    MR::Json_writer json(text);
     json.begin_object();
     json.field("input", input).field("output", output);
     json.key("soup");

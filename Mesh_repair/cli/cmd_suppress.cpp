@@ -6,8 +6,8 @@
 #include "commands.h"
 #include "common.h"
 
-#include <CGAL/Mesh_repair/fill_holes.h>
-#include <CGAL/Mesh_repair/internal/json.h>
+#include <CGAL/Mesh_repair/suppress_feature.h>
+#include <CGAL/Mesh_repair/json_writer.h>
 #include <CGAL/Mesh_repair/io.h>
 #include <CGAL/Mesh_repair/implant_patch.h>
 
@@ -126,47 +126,30 @@ int run_suppress(const std::vector<std::string>& args) {
   const std::vector<Mesh::Face_index> faces = selected_faces(arguments, mesh);
   if (faces.empty()) throw Input_error("the selection contains no face");
 
-  std::unordered_set<Mesh::Halfedge_index> old_border;
-  for (auto h : mesh.halfedges())
-    if (mesh.is_border(h)) old_border.insert(h);
-  for (auto f : faces) CGAL::Euler::remove_face(mesh.halfedge(f), mesh);
-  std::vector<Mesh::Halfedge_index> holes;
-  std::unordered_set<Mesh::Halfedge_index> seen;
-  for (auto h : mesh.halfedges()) {
-    if (!mesh.is_border(h) || seen.count(h)) continue;
-    bool opened = false;
-    for (auto c : halfedges_around_face(h, mesh)) {
-      seen.insert(c);
-      opened = opened || !old_border.count(c);
-    }
-    if (opened) holes.push_back(h);
-  }
-
   Progress_bar progress(progress_wanted(arguments));
-  std::vector<MR::Fill_patch<Mesh>> patches(holes.size());
-  std::vector<MR::Hole_fill_report> reports;
-  progress.start_step("fill opened holes");
-  for (std::size_t k = 0; k < holes.size(); ++k) {
-    progress.progress(double(k) / double(holes.size()));
-    if (!mesh.is_border(holes[k])) {  // an earlier ring hole took this cycle in
-      reports.emplace_back();
-      reports.back().skipped = true;
-      reports.back().failure = "filled with an earlier hole";
-      continue;
+  auto suppression = MR::suppress_feature(mesh, faces,
+                                          MR::parameters::fill_method(method)
+                                              .random_seed(static_cast<unsigned int>(seed))
+                                              .visitor(std::ref(progress)));
+  const std::size_t hole_count = suppression.holes_opened;
+  const std::vector<MR::Hole_fill_report>& reports = suppression.holes;
+  const std::vector<MR::Fill_patch<Mesh>>& patches = suppression.patches;
+  // The implants are taken out before the garbage is collected: that renumbers the faces.
+  std::vector<Mesh> implants;
+  if (arguments.has("--patch-out")) {
+    for (std::size_t k = 0; k < patches.size(); ++k) {
+      if (!reports[k].filled || patches[k].faces.empty()) continue;
+      implants.push_back(MR::extract_patch(mesh, patches[k].faces));
+      if (thickness > 0) implants.back() = MR::thicken_patch(implants.back(), thickness);
     }
-    reports.push_back(MR::fill_hole(
-        mesh, holes[k], patches[k],
-        MR::parameters::fill_method(method).random_seed(static_cast<unsigned int>(seed))));
   }
-  progress.end_step("fill opened holes");
   mesh.collect_garbage();
   save_mesh(arguments.get("-o"), mesh);
 
   std::size_t open = 0, written = 0;
   for (const auto& r : reports) open += (!r.filled && !r.skipped) ? 1 : 0;
-  std::cout << input << ": removed " << faces.size() << " faces, opened " << holes.size()
-            << " holes, filled " << holes.size() - open << " with " << MR::to_string(method)
-            << "\n";
+  std::cout << input << ": removed " << faces.size() << " faces, opened " << hole_count
+            << " holes, filled " << hole_count - open << " with " << MR::to_string(method) << "\n";
   for (std::size_t k = 0; k < reports.size(); ++k) {
     const auto& r = reports[k];
     if (!r.filled && !r.skipped)
@@ -174,20 +157,15 @@ int run_suppress(const std::vector<std::string>& args) {
     for (const auto& f : r.fallbacks) std::cout << "  hole " << k + 1 << " fallback: " << f << "\n";
   }
   if (arguments.has("--patch-out")) {
-    std::size_t filled = 0;
-    for (const auto& r : reports) filled += r.filled ? 1 : 0;
-    for (std::size_t k = 0; k < patches.size(); ++k) {
-      if (!reports[k].filled || patches[k].faces.empty()) continue;
-      Mesh implant = MR::extract_patch(mesh, patches[k].faces);
-      if (thickness > 0) implant = MR::thicken_patch(implant, thickness);
-      save_mesh(numbered_path(arguments.get("--patch-out"), written, filled), implant);
+    for (const Mesh& implant : implants) {
+      save_mesh(numbered_path(arguments.get("--patch-out"), written, implants.size()), implant);
       ++written;
     }
     std::cout << "wrote " << written << " implant patch" << (written == 1 ? "" : "es") << "\n";
   }
   if (arguments.has("--report")) {
     std::ostringstream text;
-    MR::internal::Json_writer json(text);
+    MR::Json_writer json(text);
     json.begin_object();
     json.key("input").value(input);
     json.key("removed_faces").value(faces.size());

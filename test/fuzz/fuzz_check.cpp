@@ -31,7 +31,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string text = MR::summary(defects);
   if (text.find("nan") != std::string::npos) std::abort();  // no NaN printed in the report
   std::ostringstream json_text;
-  MR::internal::Json_writer json(json_text);
+  MR::Json_writer json(json_text);
   MR::write_json(json, defects);
   return 0;
 }

@@ -8,22 +8,38 @@
 /// overlaps before holes, then degeneracies, then holes, then verification. See
 /// doc/automatic_repair.md.
 
-#include <CGAL/Mesh_repair/internal/automatic_repair/repair_result.h>
+#include <CGAL/Mesh_repair/repair_result.h>
 #include <CGAL/Mesh_repair/internal/automatic_repair/repair_steps.h>
 #include <CGAL/Mesh_repair/parameters.h>
 #include <CGAL/Mesh_repair/visitor.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 
-#include <limits>
-#include <memory>
-
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/global_control.h>
-#endif
-
 namespace CGAL {
 namespace Mesh_repair {
+
+namespace internal {
+
+/// Every parameter of `automatic_repair`, read once.
+template <class PolygonMesh, class NamedParameters>
+Repair_options repair_options_from(const PolygonMesh& pm, const NamedParameters& np) {
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  Repair_options o;
+  o.merge_tolerance = absolute_tolerance(pm, np);
+  o.use_cubic_curves =
+      choose_parameter(get_parameter(np, internal_np::use_cubic_curves_t{}), o.use_cubic_curves);
+  o.keep_largest_component = choose_parameter(
+      get_parameter(np, internal_np::keep_largest_component_t{}), o.keep_largest_component);
+  o.detect_self_intersections = choose_parameter(
+      get_parameter(np, internal_np::detect_self_intersections_t{}), o.detect_self_intersections);
+  o.repair_self_intersections = choose_parameter(
+      get_parameter(np, internal_np::repair_self_intersections_t{}), o.repair_self_intersections);
+  o.fill = fill_options_from(np);
+  return o;
+}
+
+}  // namespace internal
 
 /// \ingroup Mesh_repair
 /// Repairs `pm` in the order of thesis Figure 3.2: exact stitching of coincident borders
@@ -45,6 +61,24 @@ namespace Mesh_repair {
 ///     \cgalParamDescription{largest gap closed by stitching, model units}
 ///     \cgalParamType{double}
 ///     \cgalParamDefault{derived from the local border edge lengths (see `stitch_gaps`)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{relative_tolerance}
+///     \cgalParamDescription{the stitching tolerance as a fraction of the bounding-box diagonal
+///       (when `merge_tolerance` is not given)}
+///     \cgalParamType{double} \cgalParamDefault{derived (see `stitch_gaps`)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{use_cubic_curves}
+///     \cgalParamDescription{stitching merges nodes on cubic boundary curves (thesis 4.3.1)}
+///     \cgalParamType{bool} \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{(hole-filling parameters)}
+///     \cgalParamDescription{every parameter of `fill_holes` and of its methods
+///       (`hole_filter`, `check_self_intersections`, `fit_quadric`, `population_size`,
+///       `topological_grid`, ...) is forwarded to the hole-filling step}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map} \cgalParamDefault{`get(CGAL::vertex_point, pm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{geom_traits} \cgalParamDefault{deduced from the point type}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{fill_method}
 ///     \cgalParamDescription{the hole-filling method}
@@ -76,11 +110,6 @@ namespace Mesh_repair {
 ///     \cgalParamDescription{remove every connected component but the largest (counted)}
 ///     \cgalParamType{bool}
 ///     \cgalParamDefault{`false`: every component is kept}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{clean_hole_contours}
-///     \cgalParamDescription{clean the hole contours (Pernot 4) before filling}
-///     \cgalParamType{bool}
-///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{detect_self_intersections}
 ///     \cgalParamDescription{count self-intersections of the input and the output}
@@ -117,51 +146,34 @@ Repair_result automatic_repair(PolygonMesh& pm,
                                const NamedParameters& np = parameters::default_values()) {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  using parameters::get_parameter_reference;
-
-  auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                              get_property_map(CGAL::vertex_point, pm));
-  Default_visitor default_visitor;
-  auto&& visitor =
-      choose_parameter(get_parameter_reference(np, CGAL::internal_np::visitor), default_visitor);
-
-  internal::Repair_options options;
-  options.merge_tolerance =
-      choose_parameter(get_parameter(np, internal_np::merge_tolerance_t{}), -1.0);
-  options.keep_largest_component =
-      choose_parameter(get_parameter(np, internal_np::keep_largest_component_t{}), false);
-  options.clean_hole_contours =
-      choose_parameter(get_parameter(np, internal_np::clean_hole_contours_t{}), true);
-  options.detect_self_intersections =
-      choose_parameter(get_parameter(np, internal_np::detect_self_intersections_t{}), true);
-  options.repair_self_intersections =
-      choose_parameter(get_parameter(np, internal_np::repair_self_intersections_t{}), false);
-
-  internal::Region_fill_options& fill = options.fill;
-  fill.method =
-      choose_parameter(get_parameter(np, internal_np::fill_method_t{}), Fill_method::automatic);
-  fill.continuity = choose_parameter(get_parameter(np, CGAL::internal_np::fairing_continuity), 1u);
-  fill.seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0u);
-  fill.max_hole_size = choose_parameter(get_parameter(np, internal_np::max_hole_size_t{}),
-                                        std::numeric_limits<double>::infinity());
-  fill.max_hole_edges = choose_parameter(get_parameter(np, internal_np::max_hole_edges_t{}),
-                                         std::numeric_limits<std::size_t>::max());
-  fill.detect_ring_holes =
-      choose_parameter(get_parameter(np, internal_np::detect_ring_holes_t{}), true);
-  fill.threads = choose_parameter(get_parameter(np, internal_np::number_of_threads_t{}), 0);
-
-#ifdef CGAL_LINKED_WITH_TBB
-  // The parallel steps (self-intersection counts, hole filling) run on TBB's pool; the limit holds
-  // for the duration of the call.
-  std::unique_ptr<tbb::global_control> limit;
-  if (fill.threads > 0)
-    limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
-                                                  std::size_t(fill.threads));
-#endif
-  return internal::run_repair_pipeline(pm, vpm, options, visitor);
+  using GeomTraits = typename CGAL::GetGeomTraits<PolygonMesh, NamedParameters>::type;
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_property_map(CGAL::vertex_point, pm));
+  const GeomTraits traits =
+      choose_parameter<GeomTraits>(get_parameter(np, CGAL::internal_np::geom_traits));
+  internal::Visitor_parameter<NamedParameters> visitor(np);
+  return internal::run_repair_pipeline(pm, vpm, traits, internal::repair_options_from(pm, np),
+                                       visitor.get());
 }
 
 }  // namespace Mesh_repair
 }  // namespace CGAL
+
+// Compiled once in the core library (internal/compiled_core.h).
+#ifdef CGAL_MESH_REPAIR_COMPILED_CORE
+#include <CGAL/Mesh_repair/internal/compiled_core.h>
+namespace CGAL {
+namespace Mesh_repair {
+namespace internal {
+#ifndef CGAL_MESH_REPAIR_INSTANTIATE_AUTOMATIC_REPAIR
+extern
+#endif
+    template Repair_result
+    run_repair_pipeline<Core_mesh, Core_vpm, Core_traits>(Core_mesh&, Core_vpm, const Core_traits&,
+                                                          const Repair_options&, Any_visitor);
+}  // namespace internal
+}  // namespace Mesh_repair
+}  // namespace CGAL
+#endif
 
 #endif  // CGAL_MESH_REPAIR_AUTOMATIC_REPAIR_H

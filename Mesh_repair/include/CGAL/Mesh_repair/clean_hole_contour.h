@@ -15,6 +15,9 @@
 #include <CGAL/Mesh_repair/quality.h>
 #include <CGAL/Mesh_repair/visitor.h>
 
+#include <CGAL/Kernel/global_functions.h>
+#include <CGAL/squared_distance_3.h>
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -315,9 +318,8 @@ Contour_cleaning_result<PolygonMesh> clean_hole_contour(
       choose_parameter(get_parameter(np, internal_np::split_length_ratio_t()), 1.5);
   const double collapse_ratio =
       choose_parameter(get_parameter(np, internal_np::collapse_length_ratio_t()), 0.7);
-  Default_visitor default_visitor;
-  auto&& visitor = choose_parameter(
-      CGAL::parameters::get_parameter_reference(np, CGAL::internal_np::visitor), default_visitor);
+  internal::Visitor_parameter<NamedParameters> visitor_parameter(np);
+  Any_visitor visitor = visitor_parameter.get();
 
   Contour_cleaning_result<PolygonMesh> result;
   result.border_halfedge = border_halfedge;

@@ -12,7 +12,7 @@
 #include <CGAL/Mesh_repair/internal/detect_defects/border_cycles.h>
 #include <CGAL/Mesh_repair/internal/detect_defects/coincident_elements.h>
 #include <CGAL/Mesh_repair/internal/detect_defects/components.h>
-#include <CGAL/Mesh_repair/internal/detect_defects/defect_report.h>
+#include <CGAL/Mesh_repair/defect_report.h>
 #include <CGAL/Mesh_repair/internal/detect_defects/face_shapes.h>
 #include <CGAL/Mesh_repair/internal/detect_defects/overlaps.h>
 #include <CGAL/Mesh_repair/internal/detect_defects/proximity.h>
@@ -199,6 +199,18 @@ inline double bbox_diagonal(const CGAL::Bbox_3& b) {
 }  // namespace detect
 }  // namespace internal
 
+namespace internal {
+namespace detect {
+
+/// The detection on a mesh accessor and plain options (compiled once per mesh type).
+template <class Access>
+Defect_report run_detection(const Access& access, const Options& options, Any_visitor visitor) {
+  return Defect_detector<Access, Any_visitor>(access, options, visitor).run();
+}
+
+}  // namespace detect
+}  // namespace internal
+
 /// \ingroup PkgMeshRepair
 /// Finds every defect of `pm` (thesis Table 4.1) with its location: border cycles with their
 /// size and the cycles that look like islands of a ring hole (thesis 4.4), non-manifold edges
@@ -274,7 +286,6 @@ inline double bbox_diagonal(const CGAL::Bbox_3& b) {
 template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
 Defect_report detect_defects(const PolygonMesh& pm,
                              const NamedParameters& np = parameters::default_values()) {
-  using CGAL::parameters::get_parameter_reference;
   using parameters::choose_parameter;
   using parameters::get_parameter;
   using GT = typename GetGeomTraits<PolygonMesh, NamedParameters>::type;
@@ -306,15 +317,12 @@ Defect_report detect_defects(const PolygonMesh& pm,
                         internal::detect::bbox_diagonal(CGAL::Polygon_mesh_processing::bbox(
                             pm, CGAL::parameters::vertex_point_map(vpm).geom_traits(gt)));
 
-  Default_visitor default_visitor;
-  auto&& visitor =
-      choose_parameter(get_parameter_reference(np, CGAL::internal_np::visitor), default_visitor);
-
-  using Access = internal::detect::Mesh_access<PolygonMesh, VPM, GT, decltype(vim), decltype(fim),
-                                               decltype(him)>;
-  const Access access{pm, vpm, gt, vim, fim, him};
-  using Visitor = std::remove_reference_t<decltype(visitor)>;
-  return internal::detect::Defect_detector<Access, Visitor>(access, options, visitor).run();
+  internal::Visitor_parameter<NamedParameters> visitor(np);
+  using Access =
+      internal::detect::Mesh_access<PolygonMesh, VPM, GT, std::decay_t<decltype(vim)>,
+                                    std::decay_t<decltype(fim)>, std::decay_t<decltype(him)>>;
+  return internal::detect::run_detection(Access{pm, vpm, gt, vim, fim, him}, options,
+                                         visitor.get());
 }
 
 /// Combines `report` (from `detect_defects` on the mesh that `read_mesh` built) with the soup
@@ -362,5 +370,27 @@ void add_soup_repair_report(Defect_report& report, const Soup_repair_report& sou
 
 }  // namespace Mesh_repair
 }  // namespace CGAL
+
+// Compiled once in the core library (internal/compiled_core.h).
+#ifdef CGAL_MESH_REPAIR_COMPILED_CORE
+#include <CGAL/Mesh_repair/internal/compiled_core.h>
+namespace CGAL {
+namespace Mesh_repair {
+namespace internal {
+namespace detect {
+using Core_access = Mesh_access<Core_mesh, Core_vpm, Core_traits,
+                                CGAL::GetInitializedVertexIndexMap<Core_mesh>::const_type,
+                                CGAL::GetInitializedFaceIndexMap<Core_mesh>::const_type,
+                                CGAL::GetInitializedHalfedgeIndexMap<Core_mesh>::const_type>;
+#ifndef CGAL_MESH_REPAIR_INSTANTIATE_DETECT_DEFECTS
+extern
+#endif
+    template Defect_report
+    run_detection<Core_access>(const Core_access&, const Options&, Any_visitor);
+}  // namespace detect
+}  // namespace internal
+}  // namespace Mesh_repair
+}  // namespace CGAL
+#endif
 
 #endif  // CGAL_MESH_REPAIR_DETECT_DEFECTS_H

@@ -14,6 +14,7 @@
 /// spliced and checked in hole order, so the mesh is the same for any number of threads. See
 /// doc/fill_holes.md and doc/automatic_repair.md ("Parallelism").
 
+#include <CGAL/Mesh_repair/hole_filling/fill_options.h>
 #include <CGAL/Mesh_repair/hole_filling/fill_result.h>
 #include <CGAL/Mesh_repair/hole_filling/advancing_front.h>
 #include <CGAL/Mesh_repair/hole_filling/curvature_variation.h>
@@ -24,7 +25,6 @@
 #include <CGAL/Mesh_repair/internal/hole_filling/patch_check.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/pinches.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/ring_holes.h>
-#include <CGAL/Mesh_repair/internal/json.h>
 #include <CGAL/Mesh_repair/parameters.h>
 #include <CGAL/Mesh_repair/visitor.h>
 
@@ -72,17 +72,24 @@ inline Hole_fill_report method_not_available(Fill_method method) {
 
 // ---------------------------------------------------------------------------------------------
 // The method table. How to add a method:
+//  - Give it an options struct in hole_filling/fill_options.h (a member of `Fill_options`, read
+//    from the named parameters by `fill_options_from`).
 //  - A method that fills one hole at a time: write hole_filling/<method>.h with
-//      template <class PolygonMesh, class NamedParameters>
-//      Hole_fill_report fill_hole_<method>(PolygonMesh& pm, halfedge_descriptor border_halfedge,
-//                                          Fill_patch<PolygonMesh>& patch,
-//                                          const NamedParameters& np);
-//    include it at the top of this file and return its result from its case in `fill_one_hole`.
-//  - A method that solves all selected holes together (one sparse system): write
-//      template <class PolygonMesh, class NamedParameters>
-//      std::vector<Hole_fill_report> fill_holes_<method>(
-//          PolygonMesh& pm, const std::vector<halfedge_descriptor>& border_halfedges,
-//          std::vector<Fill_patch<PolygonMesh>>& patches, const NamedParameters& np);
+//      namespace internal {
+//      template <class PolygonMesh, class VertexPointMap, class GeomTraits>
+//      Hole_fill_report fill_hole_<method>(PolygonMesh& pm, VertexPointMap vpm,
+//          const GeomTraits& traits, halfedge_descriptor border_halfedge,
+//          Fill_patch<PolygonMesh>& patch, const <Method>_options& options,
+//          Face_box_cache<PolygonMesh, VertexPointMap>* face_boxes);
+//      }
+//    plus the public `fill_hole_<method>(pm, border_halfedge, patch, np)` that reads `np`
+//    into its options; include it at the top of this file and return its result from its case
+//    in `fill_one_hole`.
+//  - A method that solves all selected holes together (one sparse system): the same with
+//      std::vector<Hole_fill_report> fill_holes_<method>(PolygonMesh& pm, VertexPointMap vpm,
+//          const std::vector<halfedge_descriptor>& border_halfedges,
+//          std::vector<Fill_patch<PolygonMesh>>& patches, const <Method>_options& options,
+//          Any_visitor visitor);
 //    (`patches` has one entry per hole, reports in the same order), return it from its case in
 //    `fill_all_holes`, and return true for it in `fills_all_holes_at_once`.
 // The contract of a method: each hole is one border cycle (ring holes are already bridged); it
@@ -90,8 +97,10 @@ inline Hole_fill_report method_not_available(Fill_method method) {
 // may move only those new vertices and the hole's border vertices and their neighbours; it sets
 // `filled` when it believes the hole closed, `failure` otherwise. It neither checks nor rolls
 // back: the dispatcher verifies every patch (closed, no self-intersection, exact predicates)
-// and removes rejected ones. It reads its own parameters from `np`. It reads the mesh only
-// within two rings of the border and, through `face_box_cache`, the faces near the hole: holes
+// and removes rejected ones. (The advancing front tries several placements and keeps the first
+// that passes the same exact check, through the dispatcher's `face_boxes`; it rolls back only
+// its own rejected attempts.) It reads the mesh only
+// within two rings of the border and, through `face_boxes`, the faces near the hole: holes
 // are filled on copies holding those (internal/hole_filling/local_region.h), from several
 // threads, so a method keeps no shared mutable state and draws random numbers only from
 // `random_seed`.
@@ -102,38 +111,46 @@ inline bool fills_all_holes_at_once(Fill_method method) {
   return method == Fill_method::curvature_variation;
 }
 
-template <class PolygonMesh, class NamedParameters>
+template <class PolygonMesh, class VertexPointMap>
 std::vector<Hole_fill_report> fill_all_holes(
-    Fill_method method, PolygonMesh& pm,
+    Fill_method method, PolygonMesh& pm, VertexPointMap vpm,
     const Hole_list<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor>& holes,
-    std::vector<Fill_patch<PolygonMesh>>& patches, const NamedParameters& np) {
-  (void)pm, (void)patches, (void)np;
+    std::vector<Fill_patch<PolygonMesh>>& patches, const Fill_options& options,
+    Any_visitor visitor) {
   switch (method) {
     case Fill_method::curvature_variation:
-      return fill_holes_curvature_variation(pm, holes, patches, np).holes;
+      return fill_holes_curvature_variation(pm, vpm, holes, patches, options.curvature_variation,
+                                            visitor)
+          .holes;
     default:
       break;
   }
   return std::vector<Hole_fill_report>(holes.size(), method_not_available(method));
 }
 
-template <class PolygonMesh, class NamedParameters>
-Hole_fill_report fill_one_hole(Fill_method method, PolygonMesh& pm,
+/// One hole with one method; `face_boxes`: the boxes of the faces near the hole, or null.
+template <class PolygonMesh, class VertexPointMap, class GeomTraits>
+Hole_fill_report fill_one_hole(Fill_method method, PolygonMesh& pm, VertexPointMap vpm,
+                               const GeomTraits& traits,
                                typename boost::graph_traits<PolygonMesh>::halfedge_descriptor h,
-                               Fill_patch<PolygonMesh>& patch, const NamedParameters& np) {
+                               Fill_patch<PolygonMesh>& patch, const Fill_options& options,
+                               Face_box_cache<PolygonMesh, VertexPointMap>* face_boxes) {
   if (fills_all_holes_at_once(method)) {
     std::vector<Fill_patch<PolygonMesh>> patches(1);
-    const auto reports = fill_all_holes(method, pm, {h}, patches, np);
+    Default_visitor quiet;
+    const auto reports = fill_all_holes(method, pm, vpm, {h}, patches, options, Any_visitor(quiet));
     patch = patches.front();
     return reports.front();
   }
   switch (method) {
     case Fill_method::advancing_front:
-      return fill_hole_advancing_front(pm, h, patch, np);
+      return fill_hole_advancing_front(pm, vpm, traits, h, patch, options.advancing_front,
+                                       face_boxes);
     case Fill_method::liepa:
-      return fill_hole_liepa(pm, h, patch, np);
+      return fill_hole_liepa(pm, vpm, traits, h, patch, options.liepa);
     case Fill_method::shape_prediction:
-      return fill_hole_shape_prediction(pm, h, patch, np);
+      return fill_hole_shape_prediction(pm, vpm, traits, h, patch, options.shape_prediction,
+                                        face_boxes);
     case Fill_method::curvature_variation:
     case Fill_method::automatic:
       break;
@@ -159,7 +176,7 @@ inline std::vector<Fill_method> automatic_sequence() {
 }
 
 /// Fills the hole groups of one mesh: bridges, calls the methods, checks and rolls back.
-template <class PolygonMesh, class VertexPointMap, class GeomTraits, class NamedParameters>
+template <class PolygonMesh, class VertexPointMap, class GeomTraits>
 class Hole_filler {
   using GT = boost::graph_traits<PolygonMesh>;
   using halfedge_descriptor = typename GT::halfedge_descriptor;
@@ -179,12 +196,13 @@ class Hole_filler {
     Hole_fill_report report;
   };
   Hole_filler(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
-              bool check_self_intersections, const NamedParameters& np)
+              const Fill_options& options, Any_visitor visitor)
       : pm_(pm),
         vpm_(vpm),
         traits_(traits),
-        check_(check_self_intersections),
-        np_(np),
+        check_(options.check_self_intersections),
+        options_(options),
+        visitor_(visitor),
         near_faces_(pm, vpm) {}
 
   Hole_description describe(const Group& group) const {
@@ -221,10 +239,9 @@ class Hole_filler {
         // In a sequence, a stuck front hands over to the next method: the remnant closing
         // (a triangulation without interior nodes) is far from the surface on the holes that
         // need it (doc/advancing_front.md), where Liepa's fairing is not.
-        report =
-            candidate == Fill_method::advancing_front
-                ? attempt(group, candidate, patch, parameters::extend(np_).close_stuck_front(false))
-                : attempt(group, candidate, patch);
+        report = candidate == Fill_method::advancing_front
+                     ? attempt(group, candidate, patch, without_remnant_closing())
+                     : attempt(group, candidate, patch);
         if (report.filled) break;
         rejected(to_string(candidate), report, attempt_start);
       }
@@ -233,7 +250,9 @@ class Hole_filler {
         // principle), so it cannot bulge into a facing patch or a nearby sheet the way the
         // C1/C2 patches can.
         const auto attempt_start = Clock::now();
-        report = attempt(group, Fill_method::liepa, patch, np_.fairing_continuity(0u));
+        Fill_options membrane = options_;
+        membrane.liepa.fairing_continuity = 0;
+        report = attempt(group, Fill_method::liepa, patch, membrane);
         if (report.filled)
           report.notes.push_back(
               "filled by Liepa with C0 (membrane) fairing: the faired "
@@ -260,9 +279,9 @@ class Hole_filler {
     copy_local_region(pm_, vpm_, group, &near_faces_, local.region);
     if (!local.region.usable) return;
     auto local_vpm = get(CGAL::vertex_point, local.region.mesh);
-    const auto local_np = parameters::extend(np_).vertex_point_map(local_vpm);
-    Hole_filler<Local_mesh, decltype(local_vpm), GeomTraits, std::decay_t<decltype(local_np)>>
-        filler(local.region.mesh, local_vpm, traits_, check_, local_np);
+    Default_visitor quiet;  // tasks of several threads: no progress from inside a hole
+    Hole_filler<Local_mesh, decltype(local_vpm), GeomTraits> filler(
+        local.region.mesh, local_vpm, traits_, options_, Any_visitor(quiet));
     local.report = filler.fill(local.region.group, method, local.patch);
   }
 
@@ -316,7 +335,7 @@ class Hole_filler {
     }
     std::vector<Patch> method_patches(holes.size());
     const std::vector<Hole_fill_report> method_reports =
-        fill_all_holes(method, pm_, holes, method_patches, np_);
+        fill_all_holes(method, pm_, vpm_, holes, method_patches, options_, visitor_);
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
     std::vector<Hole_fill_report> combined(groups.size());
     std::vector<bool> attempted(groups.size(), false);
@@ -387,13 +406,19 @@ class Hole_filler {
     return h;
   }
 
-  Hole_fill_report attempt(const Group& group, Fill_method method, Patch& patch) {
-    return attempt(group, method, patch, np_);
+  /// In a sequence, a stuck front hands over to the next method instead of closing its remnant.
+  Fill_options without_remnant_closing() const {
+    Fill_options options = options_;
+    options.advancing_front.close_stuck_front = false;
+    return options;
   }
 
-  template <class MethodParameters>
+  Hole_fill_report attempt(const Group& group, Fill_method method, Patch& patch) {
+    return attempt(group, method, patch, options_);
+  }
+
   Hole_fill_report attempt(const Group& group, Fill_method method, Patch& patch,
-                           const MethodParameters& method_np) {
+                           const Fill_options& options) {
     Transaction transaction(pm_, vpm_, all_cycles(group));
     Hole_fill_report report;
     report.requested = report.used = method;
@@ -411,9 +436,8 @@ class Hole_filler {
     bool self_checked = cycles.size() == 1 && group.islands.empty() && welds.empty();
     for (halfedge_descriptor cycle : cycles) {
       Patch method_patch;
-      const Hole_fill_report part = fill_one_hole(
-          method, pm_, cycle, method_patch,
-          parameters::extend(method_np).face_box_cache(check_ ? &near_faces_ : nullptr));
+      const Hole_fill_report part = fill_one_hole(method, pm_, vpm_, traits_, cycle, method_patch,
+                                                  options, check_ ? &near_faces_ : nullptr);
       append(patch, method_patch);
       report.notes.insert(report.notes.end(), part.notes.begin(), part.notes.end());
       self_checked = self_checked && part.exactly_checked;
@@ -480,7 +504,8 @@ class Hole_filler {
   VertexPointMap vpm_;
   GeomTraits traits_;
   bool check_;
-  const NamedParameters& np_;
+  const Fill_options& options_;
+  Any_visitor visitor_;
   Face_box_cache<PolygonMesh, VertexPointMap> near_faces_;
 };
 
@@ -536,41 +561,17 @@ bool fill_in_batches(Filler& filler, const std::vector<Group>& groups,
   return true;
 }
 
-/// Fills `groups` (all selected unless `select` says otherwise); reports in group order.
-template <class PolygonMesh, class NamedParameters>
+/// Fills `groups` (all selected unless `apply_selection` is false); reports in group order.
+template <class PolygonMesh, class VertexPointMap, class GeomTraits>
 Fill_result fill_hole_groups(
-    PolygonMesh& pm,
+    PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
     const std::vector<Hole_group<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor>>&
         groups,
-    std::vector<Fill_patch<PolygonMesh>>& patches, const NamedParameters& np,
-    bool apply_selection = true) {
-  using CGAL::parameters::get_parameter_reference;
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  using GeomTraits = typename CGAL::GetGeomTraits<PolygonMesh, NamedParameters>::type;
-
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_property_map(CGAL::vertex_point, pm));
-  const GeomTraits traits =
-      choose_parameter<GeomTraits>(get_parameter(np, CGAL::internal_np::geom_traits));
-  const Fill_method method =
-      choose_parameter(get_parameter(np, internal_np::fill_method_t()), Fill_method::automatic);
-  const std::size_t max_edges = choose_parameter(get_parameter(np, internal_np::max_hole_edges_t()),
-                                                 std::numeric_limits<std::size_t>::max());
-  const double max_size = choose_parameter(get_parameter(np, internal_np::max_hole_size_t()),
-                                           std::numeric_limits<double>::infinity());
-  const auto filter =
-      choose_parameter(get_parameter(np, internal_np::hole_filter_t()), Accept_every_hole());
-  const bool check =
-      choose_parameter(get_parameter(np, internal_np::check_self_intersections_t()), true);
-  const int threads = choose_parameter(get_parameter(np, internal_np::number_of_threads_t()), 0);
-  Default_visitor default_visitor;
-  auto&& visitor =
-      choose_parameter(get_parameter_reference(np, CGAL::internal_np::visitor), default_visitor);
-
-  using Filler =
-      Hole_filler<PolygonMesh, std::remove_const_t<decltype(vpm)>, GeomTraits, NamedParameters>;
-  Filler filler(pm, vpm, traits, check, np);
+    std::vector<Fill_patch<PolygonMesh>>& patches, const Fill_options& options, Any_visitor visitor,
+    bool apply_selection) {
+  const Fill_method method = options.method;
+  using Filler = Hole_filler<PolygonMesh, VertexPointMap, GeomTraits>;
+  Filler filler(pm, vpm, traits, options, visitor);
   const double diagonal = mesh_bbox_diagonal(pm, vpm);
 
   Fill_result result;
@@ -585,8 +586,9 @@ Fill_result fill_hole_groups(
     report.border_edges = d.border_edges;
     report.island_cycles = d.island_cycles;
     report.perimeter = d.perimeter;
-    const bool selected_by_size =
-        d.border_edges + d.island_edges <= max_edges && d.relative_size <= max_size && filter(d);
+    const bool selected_by_size = d.border_edges + d.island_edges <= options.max_hole_edges &&
+                                  d.relative_size <= options.max_hole_size &&
+                                  (!options.hole_filter || options.hole_filter(d));
     if (apply_selection && !selected_by_size) {
       report.skipped = true;
       report.failure = "not selected";
@@ -607,8 +609,8 @@ Fill_result fill_hole_groups(
     }
     visitor.progress(1.0);
   } else {
-    result.cancelled =
-        !fill_in_batches(filler, groups, selected, method, threads, visitor, result, patches);
+    result.cancelled = !fill_in_batches(filler, groups, selected, method, options.number_of_threads,
+                                        visitor, result, patches);
     if (!result.cancelled) visitor.progress(1.0);
   }
   visitor.end_step("fill holes");
@@ -625,16 +627,59 @@ Fill_result fill_hole_groups(
   return result;
 }
 
-template <class PolygonMesh, class NamedParameters>
+template <class PolygonMesh, class VertexPointMap>
 std::vector<Hole_group<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor>> hole_groups(
-    const PolygonMesh& pm, const NamedParameters& np) {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, pm));
-  const bool detect = choose_parameter(get_parameter(np, internal_np::detect_ring_holes_t()), true);
-  return group_ring_holes(pm, vpm, border_cycles(pm), detect);
+    const PolygonMesh& pm, VertexPointMap vpm, bool detect_ring_holes) {
+  return group_ring_holes(pm, vpm, border_cycles(pm), detect_ring_holes);
 }
+
+/// `fill_holes` on plain options: the function the public one calls (and the compiled core
+/// instantiates once per mesh type).
+template <class PolygonMesh, class VertexPointMap, class GeomTraits>
+Fill_result fill_holes_with_options(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
+                                    const Fill_options& options, Any_visitor visitor,
+                                    std::vector<Fill_patch<PolygonMesh>>& patches) {
+  return fill_hole_groups(pm, vpm, traits, hole_groups(pm, vpm, options.detect_ring_holes), patches,
+                          options, visitor, true);
+}
+
+/// `fill_hole` on plain options.
+template <class PolygonMesh, class VertexPointMap, class GeomTraits>
+Hole_fill_report fill_hole_with_options(
+    PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
+    typename boost::graph_traits<PolygonMesh>::halfedge_descriptor border_halfedge,
+    const Fill_options& options, Any_visitor visitor, Fill_patch<PolygonMesh>& patch) {
+  using halfedge_descriptor = typename boost::graph_traits<PolygonMesh>::halfedge_descriptor;
+  std::unordered_set<halfedge_descriptor> cycle;
+  for (halfedge_descriptor h : halfedges_around_face(border_halfedge, pm)) cycle.insert(h);
+  Hole_group<halfedge_descriptor> group{border_halfedge, {}};
+  for (const auto& candidate : hole_groups(pm, vpm, options.detect_ring_holes)) {
+    if (cycle.count(candidate.outer)) group.islands = candidate.islands;
+  }
+  std::vector<Fill_patch<PolygonMesh>> patches;
+  Fill_result result = fill_hole_groups(pm, vpm, traits, {group}, patches, options, visitor, false);
+  patch = patches.front();
+  return result.holes.front();
+}
+
+/// The vertex point map and traits of a pack, as every public function of this file reads them.
+template <class PolygonMesh, class NamedParameters>
+struct Fill_parameters {
+  using GeomTraits = typename CGAL::GetGeomTraits<PolygonMesh, NamedParameters>::type;
+  using Vpm = typename CGAL::GetVertexPointMap<PolygonMesh, NamedParameters>::type;
+  Fill_parameters(PolygonMesh& pm, const NamedParameters& np)
+      : vpm(parameters::choose_parameter(
+            parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+            get_property_map(CGAL::vertex_point, pm))),
+        traits(parameters::choose_parameter<GeomTraits>(
+            parameters::get_parameter(np, CGAL::internal_np::geom_traits))),
+        options(fill_options_from(np)),
+        visitor(np) {}
+  Vpm vpm;
+  GeomTraits traits;
+  Fill_options options;
+  Visitor_parameter<NamedParameters> visitor;
+};
 
 }  // namespace internal
 
@@ -702,7 +747,9 @@ std::vector<Hole_group<typename boost::graph_traits<PolygonMesh>::halfedge_descr
 template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
 Fill_result fill_holes(PolygonMesh& pm, std::vector<Fill_patch<PolygonMesh>>& patches,
                        const NamedParameters& np = parameters::default_values()) {
-  return internal::fill_hole_groups(pm, internal::hole_groups(pm, np), patches, np);
+  internal::Fill_parameters<PolygonMesh, NamedParameters> p(pm, np);
+  return internal::fill_holes_with_options(pm, p.vpm, p.traits, p.options, p.visitor.get(),
+                                           patches);
 }
 
 template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
@@ -720,17 +767,9 @@ Hole_fill_report fill_hole(
     PolygonMesh& pm, typename boost::graph_traits<PolygonMesh>::halfedge_descriptor border_halfedge,
     Fill_patch<PolygonMesh>& patch, const NamedParameters& np = parameters::default_values()) {
   CGAL_precondition(is_border(border_halfedge, pm));
-  using halfedge_descriptor = typename boost::graph_traits<PolygonMesh>::halfedge_descriptor;
-  std::unordered_set<halfedge_descriptor> cycle;
-  for (halfedge_descriptor h : halfedges_around_face(border_halfedge, pm)) cycle.insert(h);
-  internal::Hole_group<halfedge_descriptor> group{border_halfedge, {}};
-  for (const auto& candidate : internal::hole_groups(pm, np)) {
-    if (cycle.count(candidate.outer)) group.islands = candidate.islands;
-  }
-  std::vector<Fill_patch<PolygonMesh>> patches;
-  Fill_result result = internal::fill_hole_groups(pm, {group}, patches, np, false);
-  patch = patches.front();
-  return result.holes.front();
+  internal::Fill_parameters<PolygonMesh, NamedParameters> p(pm, np);
+  return internal::fill_hole_with_options(pm, p.vpm, p.traits, border_halfedge, p.options,
+                                          p.visitor.get(), patch);
 }
 
 template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
@@ -741,43 +780,34 @@ Hole_fill_report fill_hole(
   return fill_hole(pm, border_halfedge, patch, np);
 }
 
-/// Writes one hole's report as a JSON object.
-inline void write_json(internal::Json_writer& json, const Hole_fill_report& report) {
-  json.begin_object();
-  json.key("border_edges").value(report.border_edges);
-  json.key("island_cycles").value(report.island_cycles);
-  json.key("perimeter").value(report.perimeter);
-  json.key("requested").value(to_string(report.requested));
-  json.key("used").value(to_string(report.used));
-  json.key("filled").value(report.filled);
-  json.key("skipped").value(report.skipped);
-  json.key("failure").value(report.failure);
-  json.key("fallbacks").begin_array();
-  for (const std::string& fallback : report.fallbacks) json.value(fallback);
-  json.end_array();
-  json.key("notes").begin_array();
-  for (const std::string& note : report.notes) json.value(note);
-  json.end_array();
-  json.key("faces_created").value(report.faces_created);
-  json.key("vertices_created").value(report.vertices_created);
-  json.key("seconds").value(report.seconds);
-  json.end_object();
-}
-
-/// Writes the result of `fill_holes` as a JSON object with one entry per hole.
-inline void write_json(internal::Json_writer& json, const Fill_result& result) {
-  json.begin_object();
-  json.key("filled").value(result.filled);
-  json.key("failed").value(result.failed);
-  json.key("skipped").value(result.skipped);
-  json.key("cancelled").value(result.cancelled);
-  json.key("holes").begin_array();
-  for (const Hole_fill_report& report : result.holes) write_json(json, report);
-  json.end_array();
-  json.end_object();
-}
-
 }  // namespace Mesh_repair
 }  // namespace CGAL
+
+// Compiled once in the core library (internal/compiled_core.h).
+#ifdef CGAL_MESH_REPAIR_COMPILED_CORE
+#include <CGAL/Mesh_repair/internal/compiled_core.h>
+namespace CGAL {
+namespace Mesh_repair {
+namespace internal {
+#ifndef CGAL_MESH_REPAIR_INSTANTIATE_FILL_HOLES
+extern
+#endif
+    template Fill_result
+    fill_holes_with_options<Core_mesh, Core_vpm, Core_traits>(Core_mesh&, Core_vpm,
+                                                              const Core_traits&,
+                                                              const Fill_options&, Any_visitor,
+                                                              std::vector<Fill_patch<Core_mesh>>&);
+#ifndef CGAL_MESH_REPAIR_INSTANTIATE_FILL_HOLES
+extern
+#endif
+    template Hole_fill_report
+    fill_hole_with_options<Core_mesh, Core_vpm, Core_traits>(Core_mesh&, Core_vpm,
+                                                             const Core_traits&, Core_halfedge,
+                                                             const Fill_options&, Any_visitor,
+                                                             Fill_patch<Core_mesh>&);
+}  // namespace internal
+}  // namespace Mesh_repair
+}  // namespace CGAL
+#endif
 
 #endif  // CGAL_MESH_REPAIR_FILL_HOLES_H

@@ -8,6 +8,7 @@
 /// that covers a skull defect, optionally thickened into a closed solid. See
 /// doc/shape_prediction.md.
 
+#include <CGAL/Kernel/global_functions.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>

@@ -24,8 +24,8 @@
 /// out of the soup and counted as degenerate polygons removed.
 
 #include <CGAL/Mesh_repair/internal/file_safety.h>
-#include <CGAL/Mesh_repair/internal/json.h>
 #include <CGAL/Mesh_repair/internal/readers/read_soup.h>
+#include <CGAL/Mesh_repair/json_writer.h>
 #include <CGAL/Mesh_repair/internal/soup_validation.h>
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
@@ -77,7 +77,7 @@ struct Soup_repair_report {
 };
 
 /// Writes the soup report as a JSON object (the `soup_repair` member of every report).
-inline void write_json(internal::Json_writer& json, const Soup_repair_report& r) {
+inline void write_json(Json_writer& json, const Soup_repair_report& r) {
   json.begin_object()
       .field("input_points", r.input_points)
       .field("input_polygons", r.input_polygons)

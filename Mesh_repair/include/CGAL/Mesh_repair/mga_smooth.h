@@ -85,8 +85,8 @@ inline std::vector<std::array<int, 3>> primary_triangles(const Polygon_arrays& m
     const auto& q = mesh.faces[f];
     if (mesh.degree(int(f)) == 3) {
       triangles.push_back({q[0], q[1], q[2]});
-    } else if (length(mesh.points[q[0]] - mesh.points[q[2]]) <=
-               length(mesh.points[q[1]] - mesh.points[q[3]])) {
+    } else if (norm(mesh.points[q[0]] - mesh.points[q[2]]) <=
+               norm(mesh.points[q[1]] - mesh.points[q[3]])) {
       triangles.push_back({q[0], q[1], q[2]});
       triangles.push_back({q[0], q[2], q[3]});
     } else {
@@ -115,9 +115,8 @@ Mga_smooth_result smooth_with(PolygonMesh& pm, const NamedParameters& np,
   using Constrained_default = CGAL::Static_boolean_property_map<vertex_descriptor, false>;
   auto constrained = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_is_constrained),
                                       Constrained_default());
-  Default_visitor default_visitor;
-  auto&& visitor = choose_parameter(
-      CGAL::parameters::get_parameter_reference(np, CGAL::internal_np::visitor), default_visitor);
+  internal::Visitor_parameter<NamedParameters> visitor_parameter(np);
+  Any_visitor visitor = visitor_parameter.get();
 
   Node_smoothing_settings settings;
   settings.optimizer = optimizer;
@@ -125,13 +124,13 @@ Mga_smooth_result smooth_with(PolygonMesh& pm, const NamedParameters& np,
   settings.max_sweeps =
       int(choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 3));
   settings.threads =
-      int(choose_parameter(get_parameter(np, internal_np::number_of_threads_t()), 1));
+      int(choose_parameter(get_parameter(np, internal_np::number_of_threads_t()), 0));
   settings.ga.population_size =
       int(choose_parameter(get_parameter(np, internal_np::population_size_t()), 5));
   settings.ga.max_generations =
       int(choose_parameter(get_parameter(np, internal_np::max_generations_t()), 3));
-  const double feature_angle_deg =
-      choose_parameter(get_parameter(np, internal_np::feature_angle_deg_t()), 120.0);
+  const double feature_angle_deg = choose_parameter(
+      get_parameter(np, internal_np::feature_angle_deg_t()), default_smoothing_feature_angle_deg);
   // `cubic_surface_weight` is the deprecated name of the same number (it blended a C0 cubic
   // surface with the flat triangles; the G1 surface shortens its tangents instead).
   const double tangent_scale =
@@ -270,7 +269,8 @@ Mga_smooth_result smooth_with(PolygonMesh& pm, const NamedParameters& np,
 ///   \cgalParamNBegin{vertex_is_constrained_map} \cgalParamDescription{nodes that must not move}
 ///     \cgalParamType{readable vertex property map to bool} \cgalParamDefault{none} \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_threads} \cgalParamDescription{threads (TBB) over independent
-///     node sets} \cgalParamType{int} \cgalParamDefault{1} \cgalParamNEnd
+///     node sets; the result is the same for any number} \cgalParamType{int}
+///     \cgalParamDefault{0: TBB's default (all cores), as every operator} \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_point_map} \cgalParamDefault{`get(CGAL::vertex_point, pm)`}
 ///   \cgalParamNEnd \cgalParamNBegin{geom_traits} \cgalParamDescription{provides `Point_3` and the
 ///   exact

@@ -44,8 +44,8 @@ Optimizer_options options_from_parameters(const PolygonMesh& pm, const NamedPara
   const std::size_t input_faces = std::size_t(num_faces(pm));
   options.target_faces = choose_parameter(get_parameter(np, internal_np::target_face_count_t()),
                                           std::size_t(std::llround(ratio * double(input_faces))));
-  options.feature_angle_deg =
-      choose_parameter(get_parameter(np, internal_np::feature_angle_deg_t()), 135.0);
+  options.feature_angle_deg = choose_parameter(
+      get_parameter(np, internal_np::feature_angle_deg_t()), default_feature_angle_deg);
   options.max_passes = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations),
                                         reduction ? 100 : 50);
   options.seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0u);
@@ -72,6 +72,21 @@ Optimizer_options options_from_parameters(const PolygonMesh& pm, const NamedPara
   settings.ga.target_fitness = std::numeric_limits<double>::infinity();
 
   return options;
+}
+
+}  // namespace optimize
+}  // namespace internal
+
+namespace internal {
+namespace optimize {
+
+/// `optimize_mesh` on plain options (compiled once per mesh type).
+template <class PolygonMesh, class VertexPointMap, class GeomTraits>
+Optimization_result optimize_with_options(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& gt,
+                                          const Optimizer_options& options, Any_visitor visitor) {
+  return Optimizer<PolygonMesh, VertexPointMap, GeomTraits, Any_visitor>(pm, vpm, gt, options,
+                                                                         visitor)
+      .run();
 }
 
 }  // namespace optimize
@@ -170,7 +185,6 @@ Optimizer_options options_from_parameters(const PolygonMesh& pm, const NamedPara
 template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
 Optimization_result optimize_mesh(PolygonMesh& pm,
                                   const NamedParameters& np = parameters::default_values()) {
-  using CGAL::parameters::get_parameter_reference;
   using parameters::choose_parameter;
   using parameters::get_parameter;
   using Geom_traits = typename GetGeomTraits<PolygonMesh, NamedParameters>::type;
@@ -179,20 +193,32 @@ Optimization_result optimize_mesh(PolygonMesh& pm,
       choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits));
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                     get_property_map(CGAL::vertex_point, pm));
-  Default_visitor default_visitor;
-  auto&& visitor =
-      choose_parameter(get_parameter_reference(np, CGAL::internal_np::visitor), default_visitor);
-
-  internal::optimize::Optimizer_options options =
-      internal::optimize::options_from_parameters(pm, np);
-  using Visitor = std::remove_reference_t<decltype(visitor)>;
-  internal::optimize::Optimizer<PolygonMesh, std::remove_const_t<decltype(vpm)>, Geom_traits,
-                                Visitor>
-      optimizer(pm, vpm, gt, options, visitor);
-  return optimizer.run();
+  internal::Visitor_parameter<NamedParameters> visitor(np);
+  return internal::optimize::optimize_with_options(
+      pm, vpm, gt, internal::optimize::options_from_parameters(pm, np), visitor.get());
 }
 
 }  // namespace Mesh_repair
 }  // namespace CGAL
+
+// Compiled once in the core library (internal/compiled_core.h).
+#ifdef CGAL_MESH_REPAIR_COMPILED_CORE
+#include <CGAL/Mesh_repair/internal/compiled_core.h>
+namespace CGAL {
+namespace Mesh_repair {
+namespace internal {
+namespace optimize {
+#ifndef CGAL_MESH_REPAIR_INSTANTIATE_OPTIMIZE_MESH
+extern
+#endif
+    template Optimization_result
+    optimize_with_options<Core_mesh, Core_vpm, Core_traits>(Core_mesh&, Core_vpm,
+                                                            const Core_traits&,
+                                                            const Optimizer_options&, Any_visitor);
+}  // namespace optimize
+}  // namespace internal
+}  // namespace Mesh_repair
+}  // namespace CGAL
+#endif
 
 #endif  // CGAL_MESH_REPAIR_OPTIMIZE_MESH_H

@@ -55,6 +55,14 @@ struct Named_parameters : CGAL::Named_function_parameters<T, Tag, Base> {
 #undef CGAL_add_named_parameter
 };
 
+/// Default of `feature_angle_deg` for the repair operators (`remove_slivers`, `optimize_mesh`):
+/// an edge whose dihedral angle is below 135 degrees is a feature (thesis 4.5, 7.2.1).
+constexpr double default_feature_angle_deg = 135.0;
+/// Default of `feature_angle_deg` for smoothing and quad conversion (`mga_smooth`,
+/// `triangles_to_quads`, `flip_edges_for_quality`): 120 degrees, measured on fandisk and the
+/// saddles (doc/mga_smooth.md, "Feature angle"), where 135 fixes too many nodes of scans.
+constexpr double default_smoothing_feature_angle_deg = 120.0;
+
 namespace parameters {
 
 using CGAL::parameters::choose_parameter;

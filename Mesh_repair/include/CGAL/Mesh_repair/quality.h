@@ -15,6 +15,8 @@
 /// - `quad_beta`: Chen et al. eq. 6-7 (Knupp's algebraic shape metric), 1 = square.
 /// Degenerate (zero-area) triangles get 0 for alpha, Q and f.
 
+#include <CGAL/Mesh_repair/internal/vec3.h>
+
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/boost/graph/properties.h>
 #include <CGAL/number_utils.h>
@@ -28,28 +30,11 @@ namespace CGAL {
 namespace Mesh_repair {
 
 namespace internal {
-template <class Point>
-std::array<double, 3> to_array(const Point& p) {
-  return {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
-}
-inline std::array<double, 3> sub(const std::array<double, 3>& a, const std::array<double, 3>& b) {
-  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-inline std::array<double, 3> cross(const std::array<double, 3>& a, const std::array<double, 3>& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-inline double dot(const std::array<double, 3>& a, const std::array<double, 3>& b) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-inline double norm(const std::array<double, 3>& a) {
-  return std::sqrt(dot(a, a));
-}
-
 /// The points scaled by one power of two so that their largest coordinate magnitude is in
 /// [0.5, 1): every measure here is scale-invariant, the scaling is exact, and coordinates up to
 /// 1e308 then give no infinite differences or NaN products.
 template <std::size_t N>
-std::array<std::array<double, 3>, N> scaled(std::array<std::array<double, 3>, N> p) {
+std::array<Vec3, N> scaled(std::array<Vec3, N> p) {
   double largest = 0;
   for (const auto& q : p)
     for (double x : q) largest = std::max(largest, std::abs(x));
@@ -62,16 +47,13 @@ std::array<std::array<double, 3>, N> scaled(std::array<std::array<double, 3>, N>
 }
 
 template <class Point>
-std::array<std::array<double, 3>, 3> scaled_triangle(const Point& a, const Point& b,
-                                                     const Point& c) {
+std::array<Vec3, 3> scaled_triangle(const Point& a, const Point& b, const Point& c) {
   return scaled<3>({to_array(a), to_array(b), to_array(c)});
 }
 
 /// Interior angles (radians) at a, b, c; zero-length edges give zero angles.
-inline std::array<double, 3> interior_angles(const std::array<double, 3>& a,
-                                             const std::array<double, 3>& b,
-                                             const std::array<double, 3>& c) {
-  auto angle = [](const std::array<double, 3>& u, const std::array<double, 3>& v) {
+inline std::array<double, 3> interior_angles(const Vec3& a, const Vec3& b, const Vec3& c) {
+  auto angle = [](const Vec3& u, const Vec3& v) {
     const double cross_norm = norm(cross(u, v));
     if (cross_norm == 0 && dot(u, v) == 0) return 0.0;
     return std::atan2(cross_norm, dot(u, v));
@@ -136,10 +118,10 @@ std::pair<double, double> min_max_angle_deg(const Point& a, const Point& b, cons
 template <class Point>
 double quad_beta(const Point& p0, const Point& p1, const Point& p2, const Point& p3) {
   using namespace internal;
-  const std::array<std::array<double, 3>, 4> p =
+  const std::array<Vec3, 4> p =
       scaled<4>({to_array(p0), to_array(p1), to_array(p2), to_array(p3)});
   // Signed sines relative to the quad's mean normal, so a reflex (non-convex) corner counts as bad.
-  std::array<double, 3> normal{0, 0, 0};
+  Vec3 normal{0, 0, 0};
   for (int k = 0; k < 4; ++k) {
     const auto c = cross(sub(p[(k + 1) % 4], p[k]), sub(p[(k + 3) % 4], p[k]));
     for (int i = 0; i < 3; ++i) normal[i] += c[i];

@@ -8,7 +8,7 @@
 /// rows 2-4), keeping one layer. Small overlaps between border strips are closed by
 /// `stitch_gaps()` like gaps. See doc/stitch_gaps.md.
 
-#include <CGAL/Mesh_repair/internal/json.h>
+#include <CGAL/Mesh_repair/json_writer.h>
 #include <CGAL/Mesh_repair/parameters.h>
 
 #include <CGAL/Box_intersection_d/Box_with_handle_d.h>
@@ -35,7 +35,7 @@ struct Overlap_result {
   bool valid = true;
 };
 
-inline void write_json(internal::Json_writer& json, const Overlap_result& r) {
+inline void write_json(Json_writer& json, const Overlap_result& r) {
   json.begin_object()
       .field("candidate_pairs", r.candidate_pairs)
       .field("duplicated_faces_removed", r.duplicated_faces_removed)

@@ -19,6 +19,22 @@
 namespace CGAL {
 namespace Mesh_repair {
 
+namespace internal {
+
+/// `remove_slivers` on plain settings (compiled once per mesh type).
+template <class TriangleMesh, class VertexPointMap, class GeomTraits>
+Sliver_result remove_slivers_with_settings(TriangleMesh& tm, VertexPointMap vpm,
+                                           const GeomTraits& gt, const Sliver_settings& settings,
+                                           Any_visitor visitor) {
+  Sliver_remover<TriangleMesh, VertexPointMap, GeomTraits, Any_visitor> remover(tm, vpm, gt,
+                                                                                settings, visitor);
+  Sliver_result result = remover.run();
+  result.valid = CGAL::is_valid_polygon_mesh(tm);
+  return result;
+}
+
+}  // namespace internal
+
 /// \ingroup Mesh_repair
 /// Removes the slivers of `tm`: triangles whose shape factor f (thesis eq. 4.14, normalised to
 /// [0,1], see `shape_factor()`) is below the threshold. A sliver with an edge shorter than the
@@ -70,7 +86,6 @@ namespace Mesh_repair {
 template <class TriangleMesh, class NamedParameters = parameters::Default_named_parameters>
 Sliver_result remove_slivers(TriangleMesh& tm,
                              const NamedParameters& np = parameters::default_values()) {
-  using CGAL::parameters::get_parameter_reference;
   using parameters::choose_parameter;
   using parameters::get_parameter;
   using Geom_traits = typename GetGeomTraits<TriangleMesh, NamedParameters>::type;
@@ -79,26 +94,38 @@ Sliver_result remove_slivers(TriangleMesh& tm,
       choose_parameter(get_parameter(np, internal_np::shape_factor_threshold_t{}), 0.7);
   settings.tolerance_edge_length =
       choose_parameter(get_parameter(np, internal_np::tolerance_edge_length_t{}), -1.0);
-  settings.feature_angle_deg =
-      choose_parameter(get_parameter(np, internal_np::feature_angle_deg_t{}), 135.0);
+  settings.feature_angle_deg = choose_parameter(
+      get_parameter(np, internal_np::feature_angle_deg_t{}), default_feature_angle_deg);
   settings.max_passes =
       int(choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 5u));
   auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                               get_property_map(CGAL::vertex_point, tm));
   const Geom_traits gt =
       choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits));
-  Default_visitor default_visitor;
-  auto&& visitor =
-      choose_parameter(get_parameter_reference(np, CGAL::internal_np::visitor), default_visitor);
-  using Visitor = std::remove_reference_t<decltype(visitor)>;
-  internal::Sliver_remover<TriangleMesh, decltype(vpm), Geom_traits, Visitor> remover(
-      tm, vpm, gt, settings, visitor);
-  Sliver_result result = remover.run();
-  result.valid = CGAL::is_valid_polygon_mesh(tm);
-  return result;
+  internal::Visitor_parameter<NamedParameters> visitor(np);
+  return internal::remove_slivers_with_settings(tm, vpm, gt, settings, visitor.get());
 }
 
 }  // namespace Mesh_repair
 }  // namespace CGAL
+
+// Compiled once in the core library (internal/compiled_core.h).
+#ifdef CGAL_MESH_REPAIR_COMPILED_CORE
+#include <CGAL/Mesh_repair/internal/compiled_core.h>
+namespace CGAL {
+namespace Mesh_repair {
+namespace internal {
+#ifndef CGAL_MESH_REPAIR_INSTANTIATE_REMOVE_SLIVERS
+extern
+#endif
+    template Sliver_result
+    remove_slivers_with_settings<Core_mesh, Core_vpm, Core_traits>(Core_mesh&, Core_vpm,
+                                                                   const Core_traits&,
+                                                                   const Sliver_settings&,
+                                                                   Any_visitor);
+}  // namespace internal
+}  // namespace Mesh_repair
+}  // namespace CGAL
+#endif
 
 #endif  // CGAL_MESH_REPAIR_REMOVE_SLIVERS_H

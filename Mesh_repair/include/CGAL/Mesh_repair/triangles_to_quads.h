@@ -9,7 +9,7 @@
 /// (element collapse, node elimination and edge swap) applied where they raise quality, and quality
 /// edge flips that clean a primary triangulation. See doc/mga_smooth.md.
 
-#include <CGAL/Mesh_repair/internal/c1_surface/vec3.h>
+#include <CGAL/Mesh_repair/internal/vec3.h>
 #include <CGAL/Mesh_repair/parameters.h>
 #include <CGAL/Mesh_repair/quality.h>
 #include <CGAL/Mesh_repair/visitor.h>
@@ -301,7 +301,7 @@ class Topology_cleaner {
                             d = target(to_d, pm_);
     // Only a short diagonal is collapsed (at most 0.4 of the other): collapsing a diagonal of a
     // long thin quad would move its ends far.
-    if (!(length(point(a) - point(c)) <= 0.4 * length(point(b) - point(d)))) return plan;
+    if (!(norm(point(a) - point(c)) <= 0.4 * norm(point(b) - point(d)))) return plan;
     // Interior quad, b and d keep at least three edges, a and c on no feature or border edge.
     for (halfedge_descriptor k : {h, to_b, to_c, to_d})
       if (is_border(opposite(k, pm_), pm_)) return plan;
@@ -415,8 +415,8 @@ Quad_conversion_result triangles_to_quads(
   using parameters::get_parameter;
   auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                               get_property_map(CGAL::vertex_point, pm));
-  const double feature_angle_deg =
-      choose_parameter(get_parameter(np, internal_np::feature_angle_deg_t()), 120.0);
+  const double feature_angle_deg = choose_parameter(
+      get_parameter(np, internal_np::feature_angle_deg_t()), default_smoothing_feature_angle_deg);
   internal::Topology_cleaner<PolygonMesh, decltype(vpm)> cleaner(pm, vpm, feature_angle_deg);
   Quad_conversion_result result;
   result.merged_pairs = cleaner.merge_pairs(0.05);
@@ -442,8 +442,8 @@ Edge_flip_result flip_edges_for_quality(PolygonMesh& pm,
   using parameters::get_parameter;
   auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                               get_property_map(CGAL::vertex_point, pm));
-  const double feature_angle_deg =
-      choose_parameter(get_parameter(np, internal_np::feature_angle_deg_t()), 120.0);
+  const double feature_angle_deg = choose_parameter(
+      get_parameter(np, internal_np::feature_angle_deg_t()), default_smoothing_feature_angle_deg);
   internal::Topology_cleaner<PolygonMesh, decltype(vpm)> cleaner(pm, vpm, feature_angle_deg);
   Edge_flip_result result;
   std::tie(result.flips, result.rejected_folds) = cleaner.flip_for_quality(std::cos(CGAL_PI / 18));

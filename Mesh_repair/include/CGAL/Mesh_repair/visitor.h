@@ -5,13 +5,17 @@
 
 /// \file visitor.h
 /// Progress and cancellation for every Mesh_repair operator. Pass an object with the members of
-/// `Default_visitor` through CGAL's `visitor` named parameter, as `std::ref(my_visitor)` so
-/// that it is used in place; override only what you need.
+/// `Default_visitor` through CGAL's `visitor` named parameter: as `std::ref(my_visitor)` it is
+/// used in place (its state survives the call), by value it is copied; override only what you
+/// need. Every operator reports its steps with balanced `start_step`/`end_step` calls, also when
+/// it is cancelled.
 /// Operators never print: a command-line tool draws its progress bar from these calls.
 
 #include <CGAL/Mesh_repair/parameters.h>
 
+#include <functional>
 #include <type_traits>
+#include <utility>
 
 namespace CGAL {
 namespace Mesh_repair {
@@ -27,13 +31,89 @@ struct Default_visitor {
   void end_step(const char* /*name*/) {}
 };
 
+/// A reference to any visitor, of one type: the compiled operators take it, so a visitor of a
+/// new type does not instantiate them again. It does not own the visitor it refers to.
+class Any_visitor {
+ public:
+  // Not for Any_visitor itself: a copy refers to the same visitor, not to the copied reference.
+  template <class Visitor,
+            class = std::enable_if_t<!std::is_same<std::decay_t<Visitor>, Any_visitor>::value>>
+  explicit Any_visitor(Visitor& visitor)
+      : object_(&visitor),
+        start_(&start<Visitor>),
+        progress_(&forward_progress<Visitor>),
+        end_(&end<Visitor>) {}
+  Any_visitor(const Any_visitor&) = default;
+  Any_visitor& operator=(const Any_visitor&) = default;
+
+  void start_step(const char* name) { start_(object_, name); }
+  bool progress(double fraction) { return progress_(object_, fraction); }
+  void end_step(const char* name) { end_(object_, name); }
+
+ private:
+  template <class Visitor>
+  static void start(void* v, const char* name) {
+    static_cast<Visitor*>(v)->start_step(name);
+  }
+  template <class Visitor>
+  static bool forward_progress(void* v, double fraction) {
+    return static_cast<Visitor*>(v)->progress(fraction);
+  }
+  template <class Visitor>
+  static void end(void* v, const char* name) {
+    static_cast<Visitor*>(v)->end_step(name);
+  }
+  void* object_;
+  void (*start_)(void*, const char*);
+  bool (*progress_)(void*, double);
+  void (*end_)(void*, const char*);
+};
+
 namespace internal {
 
-// Operators read the visitor with these two lines, so that a visitor passed as `std::ref(v)`
-// is used in place (its state survives the call) and one passed by value is copied:
-//   Default_visitor default_visitor;
-//   auto&& visitor = choose_parameter(get_parameter_reference(np, CGAL::internal_np::visitor),
-//                                     default_visitor);
+/// The visitor of a named-parameter pack, ready to be called: the caller's object itself when it
+/// was passed as `std::ref(v)` (its state survives the call), a copy when it was passed by value,
+/// a `Default_visitor` when none was passed.
+///   internal::Visitor_parameter<NamedParameters> visitor(np);
+///   run(..., visitor.get());
+template <class NamedParameters>
+class Visitor_parameter {
+  using Reference = decltype(CGAL::parameters::get_parameter_reference(
+      std::declval<const NamedParameters&>(), CGAL::internal_np::visitor));
+  using Found = std::remove_reference_t<Reference>;
+  static constexpr bool absent =
+      std::is_same<std::decay_t<Reference>, CGAL::internal_np::Param_not_found>::value;
+  // std::ref(v): CGAL hands out a non-const reference, kept; by value: a copy or a const
+  // reference into the pack, copied.
+  static constexpr bool by_reference =
+      std::is_lvalue_reference<Reference>::value && !std::is_const<Found>::value;
+  using Stored = std::conditional_t<
+      absent, Default_visitor,
+      std::conditional_t<by_reference, std::reference_wrapper<Found>, std::decay_t<Found>>>;
+
+ public:
+  explicit Visitor_parameter(const NamedParameters& np) : stored_(make(np)) {}
+  Any_visitor get() { return Any_visitor(unwrap(stored_)); }
+
+ private:
+  static Stored make(const NamedParameters& np) {
+    if constexpr (absent) {
+      (void)np;
+      return Default_visitor();
+    } else {
+      return Stored(CGAL::parameters::get_parameter_reference(np, CGAL::internal_np::visitor));
+    }
+  }
+  template <class T>
+  static T& unwrap(std::reference_wrapper<T> r) {
+    return r.get();
+  }
+  template <class T>
+  static T& unwrap(T& t) {
+    return t;
+  }
+  Stored stored_;
+};
 
 /// Forwards progress at a bounded rate: calls the visitor only when the fraction moved by more
 /// than 1/256 since the last call, so inner loops can report every iteration cheaply.

@@ -15,6 +15,7 @@
 /// minimum-area triangulation; every candidate patch gets the dispatcher's exact check. See
 /// doc/advancing_front.md.
 
+#include <CGAL/Mesh_repair/hole_filling/fill_options.h>
 #include <CGAL/Mesh_repair/hole_filling/fill_result.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/front_mesh.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/guide_surface.h>
@@ -135,59 +136,21 @@ double smallest_angle_deg(const Point& a, const Point& b, const Point& c) {
 
 }  // namespace internal
 
-/// Fills the hole of the border halfedge `border_halfedge` with the advancing front of thesis
-/// section 4.4; appends what it creates to `patch`. Tries several placements (and closes stuck
-/// fronts) until a patch passes the exact self-intersection check against itself, its ring and
-/// the mesh near it; rejected attempts are rolled back. On failure the mesh is unchanged.
-/// `fill_hole()`/`fill_holes()` add island bridging, pinch welding and their own check.
-///
-/// \cgalNamedParamsBegin
-///   \cgalParamNBegin{fit_quadric}
-///     \cgalParamDescription{project the new nodes onto a quadric height field fitted to the
-///       vertices within two rings of the border (used only where it is a height field over
-///       the hole's plane); false gives the thesis' pure tangent-plane placement}
-///     \cgalParamType{bool} \cgalParamDefault{true}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{number_of_iterations}
-///     \cgalParamDescription{tangential relaxation passes over the new nodes after the front
-///       closes}
-///     \cgalParamType{unsigned int} \cgalParamDefault{3}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{close_stuck_front}
-///     \cgalParamDescription{when every placement gets stuck, close what is left of the front
-///       by a checked minimum-area triangulation (and retry with other element sizes); the
-///       `automatic` dispatcher turns it off and hands a stuck front to Liepa instead}
-///     \cgalParamType{bool} \cgalParamDefault{true}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{check_self_intersections}
-///     \cgalParamDescription{check each candidate patch exactly; without it the first closed
-///       patch is kept (the front's own exact per-triangle tests still apply)}
-///     \cgalParamType{bool} \cgalParamDefault{true}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{geom_traits} \cgalParamDefault{the kernel of the points} \cgalParamNEnd
-///   \cgalParamNBegin{vertex_point_map} \cgalParamDefault{`get(CGAL::vertex_point, pm)`}
-///   \cgalParamNEnd
-/// \cgalNamedParamsEnd
-template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
+namespace internal {
+
+/// `fill_hole_advancing_front` on plain options. `shared_cache`: the dispatcher's boxes of the
+/// faces near the hole, or null (a cache of the whole mesh is then built when checking).
+template <class PolygonMesh, class VPM, class GT>
 Hole_fill_report fill_hole_advancing_front(
-    PolygonMesh& pm, typename boost::graph_traits<PolygonMesh>::halfedge_descriptor border_halfedge,
-    Fill_patch<PolygonMesh>& patch, const NamedParameters& np = parameters::default_values()) {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  using GT = typename CGAL::GetGeomTraits<PolygonMesh, NamedParameters>::type;
-  using internal::Front_projection;
-  using internal::Vec3;
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_property_map(CGAL::vertex_point, pm));
-  using VPM = std::remove_const_t<decltype(vpm)>;
-  const GT traits = choose_parameter<GT>(get_parameter(np, CGAL::internal_np::geom_traits));
-  const bool fit = choose_parameter(get_parameter(np, internal_np::fit_quadric_t()), true);
-  const bool check =
-      choose_parameter(get_parameter(np, internal_np::check_self_intersections_t()), true);
+    PolygonMesh& pm, VPM vpm, const GT& traits,
+    typename boost::graph_traits<PolygonMesh>::halfedge_descriptor border_halfedge,
+    Fill_patch<PolygonMesh>& patch, const Advancing_front_options& front_options,
+    Face_box_cache<PolygonMesh, VPM>* shared_cache) {
+  const bool fit = front_options.fit_quadric;
+  const bool check = front_options.check_self_intersections;
   internal::Front_options options;
   options.size_from_position_only = true;  // border_density ignores the adjacent edge length
-  options.smoothing_iterations =
-      int(choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 3u));
+  options.smoothing_iterations = int(front_options.smoothing_iterations);
 
   Hole_fill_report report;
   report.requested = report.used = Fill_method::advancing_front;
@@ -195,8 +158,6 @@ Hole_fill_report fill_hole_advancing_front(
   // The dispatcher passes its cache of face boxes: building one per hole is a pass over the
   // whole mesh (4 s for 100 holes in a 1.2M-face mesh).
   using Cache = internal::Face_box_cache<PolygonMesh, VPM>;
-  Cache* const shared_cache = choose_parameter(get_parameter(np, internal_np::face_box_cache_t()),
-                                               static_cast<Cache*>(nullptr));
   const internal::Front_input input =
       internal::front_input_from_border(pm, vpm, border_halfedge, point_vertices, shared_cache);
   const internal::Front_size size = internal::border_density(input, internal::front_spacing_factor);
@@ -254,8 +215,7 @@ Hole_fill_report fill_hole_advancing_front(
   // A stuck front depends on where its layers happened to meet: other element sizes meet
   // elsewhere. Without the closing of stuck fronts (the automatic method, which falls back to
   // Liepa instead) the other sizes are still tried, with the front alone.
-  const bool close_stuck =
-      choose_parameter(get_parameter(np, internal_np::close_stuck_front_t()), true);
+  const bool close_stuck = front_options.close_stuck_front;
   for (double factor : {1.0, 0.85, 1.2, 0.7, 1.4}) {
     for (std::size_t p = 0; p < projections.size(); ++p) {
       if (close_stuck)
@@ -372,7 +332,70 @@ Hole_fill_report fill_hole_advancing_front(
   return report;
 }
 
+}  // namespace internal
+
+/// Fills the hole of the border halfedge `border_halfedge` with the advancing front of thesis
+/// section 4.4; appends what it creates to `patch`. Tries several placements (and closes stuck
+/// fronts) until a patch passes the exact self-intersection check against itself, its ring and
+/// the mesh near it; rejected attempts are rolled back. On failure the mesh is unchanged.
+/// `fill_hole()`/`fill_holes()` add island bridging, pinch welding and their own check.
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{fit_quadric}
+///     \cgalParamDescription{project the new nodes onto a quadric height field fitted to the
+///       vertices within two rings of the border (used only where it is a height field over
+///       the hole's plane); false gives the thesis' pure tangent-plane placement}
+///     \cgalParamType{bool} \cgalParamDefault{true}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_iterations}
+///     \cgalParamDescription{tangential relaxation passes over the new nodes after the front
+///       closes}
+///     \cgalParamType{unsigned int} \cgalParamDefault{3}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{check_self_intersections}
+///     \cgalParamDescription{check each candidate patch exactly; without it the first closed
+///       patch is kept (the front's own exact per-triangle tests still apply)}
+///     \cgalParamType{bool} \cgalParamDefault{true}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{geom_traits} \cgalParamDefault{the kernel of the points} \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map} \cgalParamDefault{`get(CGAL::vertex_point, pm)`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
+Hole_fill_report fill_hole_advancing_front(
+    PolygonMesh& pm, typename boost::graph_traits<PolygonMesh>::halfedge_descriptor border_halfedge,
+    Fill_patch<PolygonMesh>& patch, const NamedParameters& np = parameters::default_values()) {
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using GT = typename CGAL::GetGeomTraits<PolygonMesh, NamedParameters>::type;
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_property_map(CGAL::vertex_point, pm));
+  using VPM = std::remove_const_t<decltype(vpm)>;
+  const GT traits = choose_parameter<GT>(get_parameter(np, CGAL::internal_np::geom_traits));
+  return internal::fill_hole_advancing_front(
+      pm, vpm, traits, border_halfedge, patch, internal::advancing_front_options_from(np),
+      static_cast<internal::Face_box_cache<PolygonMesh, VPM>*>(nullptr));
+}
+
 }  // namespace Mesh_repair
 }  // namespace CGAL
+
+// Compiled once in the core library (internal/compiled_core.h).
+#ifdef CGAL_MESH_REPAIR_COMPILED_CORE
+#include <CGAL/Mesh_repair/internal/compiled_core.h>
+namespace CGAL {
+namespace Mesh_repair {
+namespace internal {
+#ifndef CGAL_MESH_REPAIR_INSTANTIATE_ADVANCING_FRONT
+extern
+#endif
+    template Hole_fill_report
+    fill_hole_advancing_front<Core_mesh, Core_vpm, Core_traits>(
+        Core_mesh&, Core_vpm, const Core_traits&, Core_halfedge, Fill_patch<Core_mesh>&,
+        const Advancing_front_options&, Face_box_cache<Core_mesh, Core_vpm>*);
+}  // namespace internal
+}  // namespace Mesh_repair
+}  // namespace CGAL
+#endif
 
 #endif  // CGAL_MESH_REPAIR_HOLE_FILLING_ADVANCING_FRONT_H

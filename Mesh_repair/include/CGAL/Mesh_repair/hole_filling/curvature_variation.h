@@ -12,6 +12,7 @@
 /// See doc/curvature_variation.md.
 
 #include <CGAL/Mesh_repair/hole_filling/curvature_variation_options.h>
+#include <CGAL/Mesh_repair/hole_filling/fill_options.h>
 #include <CGAL/Mesh_repair/hole_filling/fill_result.h>
 #include <CGAL/Mesh_repair/internal/curvature_variation/deform.h>
 #include <CGAL/Mesh_repair/internal/curvature_variation/topological_grid.h>
@@ -52,6 +53,128 @@ void remove_patch(PolygonMesh& pm, Fill_patch<PolygonMesh>& patch) {
 }  // namespace curvature_variation
 }  // namespace internal
 
+namespace internal {
+
+/// `deform_patches_curvature_variation` on plain options.
+template <class PolygonMesh, class VertexPointMap>
+Curvature_deformation_report deform_patches_curvature_variation(
+    PolygonMesh& pm, VertexPointMap vpm, const std::vector<Fill_patch<PolygonMesh>>& patches,
+    const Curvature_variation_fill_options& cv_options, Any_visitor visitor) {
+  using Point = typename boost::property_traits<VertexPointMap>::value_type;
+  curvature_variation::System_options options;
+  options.objective = cv_options.objective;
+  options.nodes = cv_options.nodes;
+  options.density = cv_options.density;
+  options.area_normalized = cv_options.area_normalized_forces;
+  // The initial grid is relaxed tangentially before its densities and areas are measured, and the
+  // system is solved once with them (doc/curvature_variation.md, "Initial grid").
+  options.initial_grid_relaxation = curvature_variation::default_initial_grid_relaxation;
+  options.remeasure_weights = false;
+  const Fill_constraints<std::array<double, 3>>& constraints = cv_options.constraints;
+
+  std::vector<Vec3> targets;
+  for (const auto& p : constraints.points) targets.push_back({p[0], p[1], p[2]});
+  double spacing = constraints.polyline_spacing;
+  if (spacing <= 0 && !constraints.polylines.empty()) {
+    double sum = 0;
+    std::size_t count = 0;
+    for (const auto& patch : patches)
+      for (auto f : patch.faces)
+        for (auto h : CGAL::halfedges_around_face(halfedge(f, pm), pm)) {
+          sum += std::sqrt(CGAL::to_double(
+              CGAL::squared_distance(get(vpm, source(h, pm)), get(vpm, target(h, pm)))));
+          ++count;
+        }
+    spacing = count > 0 ? sum / double(count) : 0.0;
+  }
+  std::vector<std::vector<Point>> polylines;
+  for (const auto& line : constraints.polylines) {
+    polylines.emplace_back();
+    for (const auto& p : line) polylines.back().emplace_back(p[0], p[1], p[2]);
+  }
+  const auto samples = curvature_variation::discretise_polylines(polylines, spacing);
+  targets.insert(targets.end(), samples.begin(), samples.end());
+  return curvature_variation::deform_patches(pm, vpm, patches, options, targets, visitor);
+}
+
+/// `fill_holes_curvature_variation` on plain options.
+template <class PolygonMesh, class VertexPointMap>
+Fill_result fill_holes_curvature_variation(
+    PolygonMesh& pm, VertexPointMap vpm,
+    const std::vector<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor>&
+        border_halfedges,
+    std::vector<Fill_patch<PolygonMesh>>& patches,
+    const Curvature_variation_fill_options& cv_options, Any_visitor visitor) {
+  namespace cv = internal::curvature_variation;
+  const Topological_grid grid = cv_options.grid;
+  const double density_control_factor = cv_options.density_control_factor;
+  Curvature_deformation_report* report_out = cv_options.deformation_report;
+
+  Fill_result result;
+  patches.assign(border_halfedges.size(), Fill_patch<PolygonMesh>());
+  std::vector<double> grid_seconds(border_halfedges.size(), 0.0);
+  visitor.start_step("curvature variation: topological grids");
+  for (std::size_t i = 0; i < border_halfedges.size(); ++i) {
+    const auto start = std::chrono::steady_clock::now();
+    result.holes.push_back(cv::describe_hole(pm, border_halfedges[i], vpm));
+    std::string failure;
+    const bool inserted =
+        grid == Topological_grid::disc
+            ? cv::fill_with_disc_grid(pm, border_halfedges[i], vpm, patches[i], failure)
+            : cv::fill_with_refined_liepa(pm, border_halfedges[i], vpm, density_control_factor,
+                                          patches[i], failure);
+    if (!inserted) result.holes.back().failure = failure;
+    grid_seconds[i] = cv::seconds_since(start);
+    if (!visitor.progress(double(i + 1) / double(border_halfedges.size()))) {
+      result.cancelled = true;
+      break;
+    }
+  }
+  visitor.end_step("curvature variation: topological grids");
+
+  Curvature_deformation_report deformation;
+  if (!result.cancelled) {
+    deformation = deform_patches_curvature_variation(pm, vpm, patches, cv_options, visitor);
+    result.cancelled = deformation.cancelled;
+  }
+  if (report_out != nullptr) *report_out = deformation;
+  const double solve_seconds =
+      deformation.assembly_seconds + deformation.factorization_seconds + deformation.solve_seconds;
+  std::size_t total_free = 0;
+  for (const auto& patch : patches) total_free += patch.vertices.size();
+  for (std::size_t i = 0; i < result.holes.size(); ++i) {
+    Hole_fill_report& hole = result.holes[i];
+    const bool had_patch = !patches[i].faces.empty();
+    if (had_patch && !deformation.solved) {
+      cv::remove_patch(pm, patches[i]);
+      hole.failure = result.cancelled ? "cancelled" : "deformation: " + deformation.failure;
+    }
+    hole.filled = had_patch && deformation.solved;
+    if (hole.filled)
+      hole.notes.push_back("curvature variation: " + std::to_string(deformation.free_vertices) +
+                           " free vertices of all holes in one system, " +
+                           std::to_string(deformation.system_nonzeros) + " nonzeros");
+    hole.faces_created = patches[i].faces.size();
+    hole.vertices_created = patches[i].vertices.size();
+    const double share =
+        total_free > 0 ? double(patches[i].vertices.size()) / double(total_free) : 0.0;
+    hole.seconds = grid_seconds[i] + share * solve_seconds;
+    if (hole.filled)
+      ++result.filled;
+    else
+      ++result.failed;
+  }
+  for (std::size_t i = result.holes.size(); i < border_halfedges.size(); ++i) {
+    Hole_fill_report hole = cv::describe_hole(pm, border_halfedges[i], vpm);
+    hole.failure = "cancelled";
+    result.holes.push_back(hole);
+    ++result.failed;
+  }
+  return result;
+}
+
+}  // namespace internal
+
 /// \ingroup PkgMeshRepairHoleFilling
 /// Shapes the interior vertices of already inserted patches with Pernot's force-density bar
 /// network (section 6), all patches in one sparse solve. Patch vertices move; every other vertex
@@ -69,49 +192,11 @@ Curvature_deformation_report deform_patches_curvature_variation(
     const NamedParameters& np = parameters::default_values()) {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  using Vpm = typename GetVertexPointMap<PolygonMesh, NamedParameters>::type;
-  using Point = typename boost::property_traits<Vpm>::value_type;
-  const Vpm vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                   get_property_map(CGAL::vertex_point, pm));
-  internal::curvature_variation::System_options options;
-  options.objective = choose_parameter(get_parameter(np, internal_np::curvature_objective_t()),
-                                       Curvature_objective::force_variation);
-  options.nodes = choose_parameter(get_parameter(np, internal_np::objective_nodes_t()),
-                                   Objective_nodes::free_and_contour_nodes);
-  options.density =
-      choose_parameter(get_parameter(np, internal_np::force_density_t()), Force_density::cotangent);
-  options.area_normalized =
-      choose_parameter(get_parameter(np, internal_np::area_normalized_forces_t()), true);
-  // The initial grid is relaxed tangentially before its densities and areas are measured, and the
-  // system is solved once with them (doc/curvature_variation.md, "Initial grid").
-  options.initial_grid_relaxation = internal::curvature_variation::default_initial_grid_relaxation;
-  options.remeasure_weights = false;
-  const Fill_constraints<Point> constraints = choose_parameter(
-      get_parameter(np, internal_np::fill_constraints_t()), Fill_constraints<Point>());
-  Default_visitor default_visitor;
-  auto&& visitor = choose_parameter(
-      CGAL::parameters::get_parameter_reference(np, CGAL::internal_np::visitor), default_visitor);
-
-  std::vector<internal::curvature_variation::Vec3> targets;
-  for (const auto& p : constraints.points)
-    targets.push_back({CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())});
-  double spacing = constraints.polyline_spacing;
-  if (spacing <= 0 && !constraints.polylines.empty()) {
-    double sum = 0;
-    std::size_t count = 0;
-    for (const auto& patch : patches)
-      for (auto f : patch.faces)
-        for (auto h : CGAL::halfedges_around_face(halfedge(f, pm), pm)) {
-          sum += std::sqrt(CGAL::to_double(
-              CGAL::squared_distance(get(vpm, source(h, pm)), get(vpm, target(h, pm)))));
-          ++count;
-        }
-    spacing = count > 0 ? sum / double(count) : 0.0;
-  }
-  const auto samples =
-      internal::curvature_variation::discretise_polylines(constraints.polylines, spacing);
-  targets.insert(targets.end(), samples.begin(), samples.end());
-  return internal::curvature_variation::deform_patches(pm, vpm, patches, options, targets, visitor);
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_property_map(CGAL::vertex_point, pm));
+  internal::Visitor_parameter<NamedParameters> visitor(np);
+  return internal::deform_patches_curvature_variation(
+      pm, vpm, patches, internal::curvature_variation_options_from(np), visitor.get());
 }
 
 /// \ingroup PkgMeshRepairHoleFilling
@@ -183,82 +268,12 @@ Fill_result fill_holes_curvature_variation(
     const NamedParameters& np = parameters::default_values()) {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  namespace cv = internal::curvature_variation;
-  using Vpm = typename GetVertexPointMap<PolygonMesh, NamedParameters>::type;
-  const Vpm vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                   get_property_map(CGAL::vertex_point, pm));
-  const Topological_grid grid = choose_parameter(
-      get_parameter(np, internal_np::topological_grid_t()), Topological_grid::refined_liepa);
-  const double density_control_factor = choose_parameter(
-      get_parameter(np, CGAL::internal_np::density_control_factor), std::sqrt(2.0));
-  Curvature_deformation_report* report_out =
-      choose_parameter(get_parameter(np, internal_np::deformation_report_t()),
-                       static_cast<Curvature_deformation_report*>(nullptr));
-  Default_visitor default_visitor;
-  auto&& visitor = choose_parameter(
-      CGAL::parameters::get_parameter_reference(np, CGAL::internal_np::visitor), default_visitor);
-
-  Fill_result result;
-  patches.assign(border_halfedges.size(), Fill_patch<PolygonMesh>());
-  std::vector<double> grid_seconds(border_halfedges.size(), 0.0);
-  visitor.start_step("curvature variation: topological grids");
-  for (std::size_t i = 0; i < border_halfedges.size(); ++i) {
-    const auto start = std::chrono::steady_clock::now();
-    result.holes.push_back(cv::describe_hole(pm, border_halfedges[i], vpm));
-    std::string failure;
-    const bool inserted =
-        grid == Topological_grid::disc
-            ? cv::fill_with_disc_grid(pm, border_halfedges[i], vpm, patches[i], failure)
-            : cv::fill_with_refined_liepa(pm, border_halfedges[i], vpm, density_control_factor,
-                                          patches[i], failure);
-    if (!inserted) result.holes.back().failure = failure;
-    grid_seconds[i] = cv::seconds_since(start);
-    if (!visitor.progress(double(i + 1) / double(border_halfedges.size()))) {
-      result.cancelled = true;
-      break;
-    }
-  }
-  visitor.end_step("curvature variation: topological grids");
-
-  Curvature_deformation_report deformation;
-  if (!result.cancelled) {
-    deformation = deform_patches_curvature_variation(pm, patches, np);
-    result.cancelled = deformation.cancelled;
-  }
-  if (report_out != nullptr) *report_out = deformation;
-  const double solve_seconds =
-      deformation.assembly_seconds + deformation.factorization_seconds + deformation.solve_seconds;
-  std::size_t total_free = 0;
-  for (const auto& patch : patches) total_free += patch.vertices.size();
-  for (std::size_t i = 0; i < result.holes.size(); ++i) {
-    Hole_fill_report& hole = result.holes[i];
-    const bool had_patch = !patches[i].faces.empty();
-    if (had_patch && !deformation.solved) {
-      cv::remove_patch(pm, patches[i]);
-      hole.failure = result.cancelled ? "cancelled" : "deformation: " + deformation.failure;
-    }
-    hole.filled = had_patch && deformation.solved;
-    if (hole.filled)
-      hole.notes.push_back("curvature variation: " + std::to_string(deformation.free_vertices) +
-                           " free vertices of all holes in one system, " +
-                           std::to_string(deformation.system_nonzeros) + " nonzeros");
-    hole.faces_created = patches[i].faces.size();
-    hole.vertices_created = patches[i].vertices.size();
-    const double share =
-        total_free > 0 ? double(patches[i].vertices.size()) / double(total_free) : 0.0;
-    hole.seconds = grid_seconds[i] + share * solve_seconds;
-    if (hole.filled)
-      ++result.filled;
-    else
-      ++result.failed;
-  }
-  for (std::size_t i = result.holes.size(); i < border_halfedges.size(); ++i) {
-    Hole_fill_report hole = cv::describe_hole(pm, border_halfedges[i], vpm);
-    hole.failure = "cancelled";
-    result.holes.push_back(hole);
-    ++result.failed;
-  }
-  return result;
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_property_map(CGAL::vertex_point, pm));
+  internal::Visitor_parameter<NamedParameters> visitor(np);
+  return internal::fill_holes_curvature_variation(pm, vpm, border_halfedges, patches,
+                                                  internal::curvature_variation_options_from(np),
+                                                  visitor.get());
 }
 
 /// \ingroup PkgMeshRepairHoleFilling
@@ -278,5 +293,32 @@ Hole_fill_report fill_hole_curvature_variation(
 
 }  // namespace Mesh_repair
 }  // namespace CGAL
+
+// Compiled once in the core library (internal/compiled_core.h).
+#ifdef CGAL_MESH_REPAIR_COMPILED_CORE
+#include <CGAL/Mesh_repair/internal/compiled_core.h>
+namespace CGAL {
+namespace Mesh_repair {
+namespace internal {
+#ifndef CGAL_MESH_REPAIR_INSTANTIATE_CURVATURE_VARIATION
+extern
+#endif
+    template Fill_result
+    fill_holes_curvature_variation<Core_mesh, Core_vpm>(Core_mesh&, Core_vpm,
+                                                        const std::vector<Core_halfedge>&,
+                                                        std::vector<Fill_patch<Core_mesh>>&,
+                                                        const Curvature_variation_fill_options&,
+                                                        Any_visitor);
+#ifndef CGAL_MESH_REPAIR_INSTANTIATE_CURVATURE_VARIATION
+extern
+#endif
+    template Curvature_deformation_report
+    deform_patches_curvature_variation<Core_mesh, Core_vpm>(
+        Core_mesh&, Core_vpm, const std::vector<Fill_patch<Core_mesh>>&,
+        const Curvature_variation_fill_options&, Any_visitor);
+}  // namespace internal
+}  // namespace Mesh_repair
+}  // namespace CGAL
+#endif
 
 #endif  // CGAL_MESH_REPAIR_HOLE_FILLING_CURVATURE_VARIATION_H

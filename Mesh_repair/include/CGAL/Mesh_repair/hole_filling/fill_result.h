@@ -8,6 +8,8 @@
 /// way by `fill_hole`/`fill_holes` (fill_holes.h), `automatic_repair` and `mesh_repair bench
 /// holes`.
 
+#include <CGAL/Mesh_repair/json_writer.h>
+
 #include <boost/graph/graph_traits.hpp>
 
 #include <string>
@@ -97,6 +99,42 @@ struct Fill_result {
   bool cancelled = false;
   bool all_filled() const { return failed == 0 && !cancelled; }
 };
+
+/// Writes one hole's report as a JSON object.
+inline void write_json(Json_writer& json, const Hole_fill_report& report) {
+  json.begin_object();
+  json.key("border_edges").value(report.border_edges);
+  json.key("island_cycles").value(report.island_cycles);
+  json.key("perimeter").value(report.perimeter);
+  json.key("requested").value(to_string(report.requested));
+  json.key("used").value(to_string(report.used));
+  json.key("filled").value(report.filled);
+  json.key("skipped").value(report.skipped);
+  json.key("failure").value(report.failure);
+  json.key("fallbacks").begin_array();
+  for (const std::string& fallback : report.fallbacks) json.value(fallback);
+  json.end_array();
+  json.key("notes").begin_array();
+  for (const std::string& note : report.notes) json.value(note);
+  json.end_array();
+  json.key("faces_created").value(report.faces_created);
+  json.key("vertices_created").value(report.vertices_created);
+  json.key("seconds").value(report.seconds);
+  json.end_object();
+}
+
+/// Writes the result of `fill_holes` as a JSON object with one entry per hole.
+inline void write_json(Json_writer& json, const Fill_result& result) {
+  json.begin_object();
+  json.key("filled").value(result.filled);
+  json.key("failed").value(result.failed);
+  json.key("skipped").value(result.skipped);
+  json.key("cancelled").value(result.cancelled);
+  json.key("holes").begin_array();
+  for (const Hole_fill_report& report : result.holes) write_json(json, report);
+  json.end_array();
+  json.end_object();
+}
 
 }  // namespace Mesh_repair
 }  // namespace CGAL

@@ -9,6 +9,7 @@
 /// interface shared by every hole-filling method, so it is called and measured like the others.
 /// See doc/liepa.md.
 
+#include <CGAL/Mesh_repair/hole_filling/fill_options.h>
 #include <CGAL/Mesh_repair/hole_filling/fill_result.h>
 #include <CGAL/Mesh_repair/parameters.h>
 
@@ -19,6 +20,35 @@
 
 namespace CGAL {
 namespace Mesh_repair {
+
+namespace internal {
+
+/// `fill_hole_liepa` on plain options; `vpm` and `traits` as read by the public function.
+template <class PolygonMesh, class VertexPointMap, class GeomTraits>
+Hole_fill_report fill_hole_liepa(
+    PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
+    typename boost::graph_traits<PolygonMesh>::halfedge_descriptor border_halfedge,
+    Fill_patch<PolygonMesh>& patch, const Liepa_options& options) {
+  Hole_fill_report report;
+  report.requested = report.used = Fill_method::liepa;
+  if (options.fairing_continuity > 2) {
+    report.failure = "fairing_continuity must be 0, 1 or 2";
+    return report;
+  }
+  const auto result = CGAL::Polygon_mesh_processing::triangulate_refine_and_fair_hole(
+      pm, border_halfedge, std::back_inserter(patch.faces), std::back_inserter(patch.vertices),
+      CGAL::parameters::vertex_point_map(vpm).geom_traits(traits).fairing_continuity(
+          options.fairing_continuity));
+  report.faces_created = patch.faces.size();
+  report.vertices_created = patch.vertices.size();
+  report.filled = !patch.faces.empty();
+  if (!report.filled) report.failure = "CGAL found no triangulation of the border polygon";
+  if (report.filled && !std::get<0>(result) && !patch.vertices.empty())
+    report.notes.push_back("fairing failed (singular system); the refined patch is not faired");
+  return report;
+}
+
+}  // namespace internal
 
 /// Fills the hole bounded by the border halfedge `border_halfedge` with CGAL's
 /// `triangulate_refine_and_fair_hole`. The faces and vertices it creates are appended to
@@ -47,34 +77,33 @@ Hole_fill_report fill_hole_liepa(
   using parameters::choose_parameter;
   using parameters::get_parameter;
   using GeomTraits = typename CGAL::GetGeomTraits<PolygonMesh, NamedParameters>::type;
-
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                     get_property_map(CGAL::vertex_point, pm));
   const GeomTraits traits =
       choose_parameter<GeomTraits>(get_parameter(np, CGAL::internal_np::geom_traits));
-  const unsigned int continuity =
-      choose_parameter(get_parameter(np, CGAL::internal_np::fairing_continuity), 1u);
-
-  Hole_fill_report report;
-  report.requested = report.used = Fill_method::liepa;
-  if (continuity > 2) {
-    report.failure = "fairing_continuity must be 0, 1 or 2";
-    return report;
-  }
-  // A fresh pack: our own `visitor` (progress) is not CGAL's hole-filling visitor.
-  const auto result = CGAL::Polygon_mesh_processing::triangulate_refine_and_fair_hole(
-      pm, border_halfedge, std::back_inserter(patch.faces), std::back_inserter(patch.vertices),
-      CGAL::parameters::vertex_point_map(vpm).geom_traits(traits).fairing_continuity(continuity));
-  report.faces_created = patch.faces.size();
-  report.vertices_created = patch.vertices.size();
-  report.filled = !patch.faces.empty();
-  if (!report.filled) report.failure = "CGAL found no triangulation of the border polygon";
-  if (report.filled && !std::get<0>(result) && !patch.vertices.empty())
-    report.notes.push_back("fairing failed (singular system); the refined patch is not faired");
-  return report;
+  return internal::fill_hole_liepa(pm, vpm, traits, border_halfedge, patch,
+                                   internal::liepa_options_from(np));
 }
 
 }  // namespace Mesh_repair
 }  // namespace CGAL
+
+// Compiled once in the core library (internal/compiled_core.h).
+#ifdef CGAL_MESH_REPAIR_COMPILED_CORE
+#include <CGAL/Mesh_repair/internal/compiled_core.h>
+namespace CGAL {
+namespace Mesh_repair {
+namespace internal {
+#ifndef CGAL_MESH_REPAIR_INSTANTIATE_LIEPA
+extern
+#endif
+    template Hole_fill_report
+    fill_hole_liepa<Core_mesh, Core_vpm, Core_traits>(Core_mesh&, Core_vpm, const Core_traits&,
+                                                      Core_halfedge, Fill_patch<Core_mesh>&,
+                                                      const Liepa_options&);
+}  // namespace internal
+}  // namespace Mesh_repair
+}  // namespace CGAL
+#endif
 
 #endif  // CGAL_MESH_REPAIR_HOLE_FILLING_LIEPA_H

@@ -9,6 +9,7 @@
 /// quartic triangular Bezier patches (5.5), advancing front with every new node mapped onto the
 /// patches and smoothing guided by them (5.6). See doc/shape_prediction.md.
 
+#include <CGAL/Mesh_repair/hole_filling/fill_options.h>
 #include <CGAL/Mesh_repair/hole_filling/fill_result.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/advancing_front_core.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/patch_check.h>
@@ -25,6 +26,41 @@
 
 namespace CGAL {
 namespace Mesh_repair {
+
+namespace internal {
+
+/// `fill_hole_shape_prediction` on plain options; `face_boxes`: the dispatcher's boxes of the
+/// faces near the hole, or null.
+template <class PolygonMesh, class VertexPointMap, class GeomTraits>
+Hole_fill_report fill_hole_shape_prediction(
+    PolygonMesh& pm, VertexPointMap vpm, const GeomTraits&,
+    typename boost::graph_traits<PolygonMesh>::halfedge_descriptor border_halfedge,
+    Fill_patch<PolygonMesh>& patch, const Shape_prediction_options& sp,
+    Face_box_cache<PolygonMesh, VertexPointMap>* face_boxes) {
+  shape_prediction::Shape_estimate_options options;
+  options.ga.random_seed = sp.random_seed;
+  options.ga.population_size = sp.population_size;
+  options.ga.max_generations = sp.max_generations;
+  options.ga.target_fitness = sp.target_fitness;
+  // The GA stops after 15 generations without a better triangulation (optimize_mesh keeps 60):
+  // on the 126 bench holes 15 gave the same or better fidelity than 30 and 60 (median Einf/diag
+  // 0.00624 against 0.00633, 124 holes closed against 123) in 0.87 of the time
+  // (doc/shape_prediction.md, "GA stall").
+  options.ga.stall_generations = 15;
+  // ... counting only improvements of at least 0.002 (of the fitness range [0, 1]): on the
+  // bench table and held-out holes the same fidelity in 0.91-0.92 of the time
+  // (doc/shape_prediction.md).
+  options.ga.stall_improvement = 0.002;
+  options.fitness.w_internal = sp.fitness_weights[0];
+  options.fitness.w_boundary = sp.fitness_weights[1];
+  options.fitness.w_deviation = sp.fitness_weights[2];
+  options.smoothing_iterations = sp.boundary_smoothing_iterations;
+  options.simplify = sp.use_rough_set_simplification;
+  return shape_prediction::fill_hole<GeomTraits>(pm, vpm, border_halfedge, patch, options,
+                                                 sp.curvature_flow_iterations, face_boxes);
+}
+
+}  // namespace internal
 
 /// Fills the hole bounded by the border halfedge `border_halfedge` by shape prediction. The
 /// faces and vertices it creates are appended to `patch`; the border vertices do not move. Only
@@ -84,50 +120,35 @@ Hole_fill_report fill_hole_shape_prediction(
   using parameters::choose_parameter;
   using parameters::get_parameter;
   using GeomTraits = typename CGAL::GetGeomTraits<PolygonMesh, NamedParameters>::type;
-  namespace sp = internal::shape_prediction;
-
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                     get_property_map(CGAL::vertex_point, pm));
-  sp::Shape_estimate_options options;
-  options.ga.random_seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0u);
-  options.ga.population_size =
-      choose_parameter(get_parameter(np, internal_np::population_size_t()), 30);
-  options.ga.max_generations =
-      choose_parameter(get_parameter(np, internal_np::max_generations_t()), 500);
-  options.ga.target_fitness =
-      choose_parameter(get_parameter(np, internal_np::target_fitness_t()), 0.7);
-  // The GA stops after 15 generations without a better triangulation (optimize_mesh keeps 60):
-  // on the 126 bench holes 15 gave the same or better fidelity than 30 and 60 (median Einf/diag
-  // 0.00624 against 0.00633, 124 holes closed against 123) in 0.87 of the time
-  // (doc/shape_prediction.md, "GA stall").
-  options.ga.stall_generations = 15;
-  // ... counting only improvements of at least 0.002 (of the fitness range [0, 1]): on the
-  // bench table and held-out holes the same fidelity in 0.91-0.92 of the time
-  // (doc/shape_prediction.md).
-  options.ga.stall_improvement = 0.002;
-  const std::array<double, 3> weights =
-      choose_parameter(get_parameter(np, internal_np::fitness_weights_t()),
-                       std::array<double, 3>{1.0 / 3, 1.0 / 3, 1.0 / 3});
-  options.fitness.w_internal = weights[0];
-  options.fitness.w_boundary = weights[1];
-  options.fitness.w_deviation = weights[2];
-  options.smoothing_iterations =
-      choose_parameter(get_parameter(np, internal_np::boundary_smoothing_iterations_t()), 1);
-  options.simplify =
-      choose_parameter(get_parameter(np, internal_np::use_rough_set_simplification_t()), true);
-  const int flow_iterations =
-      choose_parameter(get_parameter(np, internal_np::curvature_flow_iterations_t()), 5);
-
-  // The dispatcher's cache of face boxes (see fill_hole_advancing_front): the front tests its
-  // triangles against the faces near the hole without a pass over the whole mesh.
-  using Cache = internal::Face_box_cache<PolygonMesh, std::decay_t<decltype(vpm)>>;
-  Cache* const face_boxes = choose_parameter(get_parameter(np, internal_np::face_box_cache_t()),
-                                             static_cast<Cache*>(nullptr));
-  return internal::shape_prediction::fill_hole<GeomTraits>(pm, vpm, border_halfedge, patch, options,
-                                                           flow_iterations, face_boxes);
+  using VPM = std::remove_const_t<decltype(vpm)>;
+  const GeomTraits traits =
+      choose_parameter<GeomTraits>(get_parameter(np, CGAL::internal_np::geom_traits));
+  return internal::fill_hole_shape_prediction(
+      pm, vpm, traits, border_halfedge, patch, internal::shape_prediction_options_from(np),
+      static_cast<internal::Face_box_cache<PolygonMesh, VPM>*>(nullptr));
 }
 
 }  // namespace Mesh_repair
 }  // namespace CGAL
+
+// Compiled once in the core library (internal/compiled_core.h).
+#ifdef CGAL_MESH_REPAIR_COMPILED_CORE
+#include <CGAL/Mesh_repair/internal/compiled_core.h>
+namespace CGAL {
+namespace Mesh_repair {
+namespace internal {
+#ifndef CGAL_MESH_REPAIR_INSTANTIATE_SHAPE_PREDICTION
+extern
+#endif
+    template Hole_fill_report
+    fill_hole_shape_prediction<Core_mesh, Core_vpm, Core_traits>(
+        Core_mesh&, Core_vpm, const Core_traits&, Core_halfedge, Fill_patch<Core_mesh>&,
+        const Shape_prediction_options&, Face_box_cache<Core_mesh, Core_vpm>*);
+}  // namespace internal
+}  // namespace Mesh_repair
+}  // namespace CGAL
+#endif
 
 #endif  // CGAL_MESH_REPAIR_HOLE_FILLING_SHAPE_PREDICTION_H

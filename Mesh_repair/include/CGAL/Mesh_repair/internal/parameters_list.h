@@ -27,12 +27,10 @@ MESH_REPAIR_PARAMETER(detect_ring_holes)         // bool: bridge islands into th
 MESH_REPAIR_PARAMETER(hole_filter)               // predicate on a hole description
 MESH_REPAIR_PARAMETER(check_self_intersections)  // bool: exact check of every patch
 MESH_REPAIR_PARAMETER(fit_quadric)  // bool: advancing front projects new nodes on a fitted quadric
-MESH_REPAIR_PARAMETER(close_stuck_front)    // bool: advancing front closes a stuck front's remnant
-MESH_REPAIR_PARAMETER(face_box_cache)       // internal: the dispatcher's Face_box_cache*, shared
-MESH_REPAIR_PARAMETER(curvature_objective)  // Curvature_objective, Pernot eq. 8 or 9
-MESH_REPAIR_PARAMETER(objective_nodes)      // Objective_nodes: free, or free and contour
-MESH_REPAIR_PARAMETER(topological_grid)     // Topological_grid: disc or refined Liepa
-MESH_REPAIR_PARAMETER(force_density)        // Force_density: uniform, inverse length, cotangent
+MESH_REPAIR_PARAMETER(curvature_objective)     // Curvature_objective, Pernot eq. 8 or 9
+MESH_REPAIR_PARAMETER(objective_nodes)         // Objective_nodes: free, or free and contour
+MESH_REPAIR_PARAMETER(topological_grid)        // Topological_grid: disc or refined Liepa
+MESH_REPAIR_PARAMETER(force_density)           // Force_density: uniform, inverse length, cotangent
 MESH_REPAIR_PARAMETER(area_normalized_forces)  // bool: objective on f_i / A_i
 MESH_REPAIR_PARAMETER(fill_constraints)        // Fill_constraints<Point>, Pernot 6.4
 MESH_REPAIR_PARAMETER(deformation_report)      // Curvature_deformation_report*, filled on return
@@ -56,6 +54,7 @@ MESH_REPAIR_PARAMETER(curvature_flow_iterations)  // shape prediction: smoothing
 MESH_REPAIR_PARAMETER(surface_tangent_scale)  // micro-GA: 0 input triangles .. 1 full G1 surface
 MESH_REPAIR_PARAMETER(cubic_surface_weight)   // deprecated name of surface_tangent_scale
 MESH_REPAIR_PARAMETER(slide_feature_nodes)    // micro-GA: nodes inside feature lines slide along
+MESH_REPAIR_PARAMETER(convert_to_quads)       // mesh_points: pair triangles into quads
 
 // mesh optimisation (optimize_mesh.h, thesis ch. 7)
 MESH_REPAIR_PARAMETER(optimization_mode)          // Optimization_mode: reduction or quality
@@ -73,7 +72,6 @@ MESH_REPAIR_PARAMETER(number_of_threads)
 // automatic repair
 MESH_REPAIR_PARAMETER(keep_largest_component)     // bool: drop all but the largest component
 MESH_REPAIR_PARAMETER(repair_self_intersections)  // bool: CGAL's experimental local removal
-MESH_REPAIR_PARAMETER(clean_hole_contours)        // bool: Pernot 4 before filling
 
 // hole benchmark (hole_benchmark.h)
 MESH_REPAIR_PARAMETER(number_of_holes)  // holes punched per mesh

@@ -7,10 +7,9 @@
 
 #include <CGAL/Mesh_repair/fill_holes.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/border_cycles.h>
-#include <CGAL/Mesh_repair/internal/automatic_repair/repair_result.h>
 #include <CGAL/Mesh_repair/internal/mesh_counts.h>
-#include <CGAL/Mesh_repair/repair_t_junctions.h>
-#include <CGAL/Mesh_repair/stitch_gaps.h>
+#include <CGAL/Mesh_repair/internal/stitching/run_gap_stitcher.h>
+#include <CGAL/Mesh_repair/repair_result.h>
 #include <CGAL/Mesh_repair/visitor.h>
 
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
@@ -25,37 +24,68 @@
 #include <CGAL/boost/graph/helpers.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
 #include <tbb/task_arena.h>
 #endif
 
+#include <chrono>
 #include <cmath>
 #include <iterator>
 #include <limits>
+#include <memory>
 #include <set>
+#include <sstream>
 #include <vector>
 
 namespace CGAL {
 namespace Mesh_repair {
 namespace internal {
 
-/// Hole-filling options of automatic_repair.
-struct Region_fill_options {
-  Fill_method method = Fill_method::automatic;
-  unsigned int continuity = 1;
-  unsigned int seed = 0;
-  double max_hole_size = std::numeric_limits<double>::infinity();  ///< of the bbox diagonal
-  std::size_t max_hole_edges = std::numeric_limits<std::size_t>::max();
-  bool detect_ring_holes = true;
-  int threads = 0;
-};
-
+/// The options of automatic_repair, read once from its named parameters.
 struct Repair_options {
   double merge_tolerance = -1;  ///< negative: derived by stitch_gaps
+  bool use_cubic_curves = true;
   bool keep_largest_component = false;
-  bool clean_hole_contours = true;
   bool detect_self_intersections = true;
   bool repair_self_intersections = false;
-  Region_fill_options fill;
+  Fill_options fill;
+};
+
+/// Times a step, reports it to the visitor (balanced start/end, also on cancellation) and
+/// records it in the result.
+class Step_timer {
+ public:
+  Step_timer(Repair_result& result, const char* name, Any_visitor visitor)
+      : result_(result), visitor_(visitor) {
+    step_.name = name;
+    start_ = std::chrono::steady_clock::now();
+    visitor_.start_step(name);
+  }
+  ~Step_timer() {
+    step_.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    visitor_.end_step(step_.name.c_str());
+    result_.steps.push_back(std::move(step_));
+  }
+  Step_timer(const Step_timer&) = delete;
+  Step_timer& operator=(const Step_timer&) = delete;
+  Repair_step_report& step() { return step_; }
+  void count(const std::string& key, double value) { step_.counts.emplace_back(key, value); }
+  template <class Result>
+  void details(const Result& r) {
+    std::ostringstream out;
+    Json_writer json(out, false);
+    write_json(json, r);
+    step_.details_json = out.str();
+    if (!step_.details_json.empty() && step_.details_json.back() == '\n')
+      step_.details_json.pop_back();
+  }
+
+ private:
+  Repair_result& result_;
+  Any_visitor visitor_;
+  Repair_step_report step_;
+  std::chrono::steady_clock::time_point start_;
 };
 
 template <class PolygonMesh>
@@ -85,8 +115,8 @@ std::size_t count_self_intersections(const PolygonMesh& pm) {
 }
 
 template <class PolygonMesh>
-void step_exact_stitching(PolygonMesh& pm, Repair_result& result) {
-  Step_timer timer(result, "exact stitching");
+void step_exact_stitching(PolygonMesh& pm, Repair_result& result, Any_visitor visitor) {
+  Step_timer timer(result, "exact stitching", visitor);
   const std::size_t before = count_border_halfedges(pm);
   const std::size_t stitched = CGAL::Polygon_mesh_processing::stitch_borders(pm);
   timer.count("halfedge_pairs_stitched", double(stitched));
@@ -94,17 +124,29 @@ void step_exact_stitching(PolygonMesh& pm, Repair_result& result) {
   timer.count("border_edges_after", double(count_border_halfedges(pm)));
 }
 
+/// The settings of `stitch_gaps` (or, without node merging, `repair_t_junctions`) with
+/// `tolerance` (negative: derived from the border edge lengths).
+inline Stitch_settings stitch_settings(const Repair_options& options, double tolerance,
+                                       bool merge_nodes) {
+  Stitch_settings settings;
+  settings.merge_tolerance = tolerance;
+  settings.merge_nodes = merge_nodes;
+  settings.use_cubic_curves = options.use_cubic_curves;
+  return settings;
+}
+
 /// Stitches gaps then T-junctions with `tolerance` (negative: derived from the border edge
 /// lengths by stitch_gaps); returns how many nodes were merged or inserted.
-template <class PolygonMesh, class VertexPointMap, class Visitor>
+template <class PolygonMesh, class VertexPointMap, class GeomTraits>
 std::pair<Stitch_result, Stitch_result> stitch_with_tolerance(PolygonMesh& pm, VertexPointMap vpm,
-                                                              double tolerance, Visitor& visitor) {
-  const auto np = parameters::vertex_point_map(vpm).visitor(std::ref(visitor));
+                                                              const GeomTraits& traits,
+                                                              const Repair_options& options,
+                                                              double tolerance,
+                                                              Any_visitor visitor) {
   std::pair<Stitch_result, Stitch_result> r;
-  r.first = tolerance >= 0 ? stitch_gaps(pm, np.merge_tolerance(tolerance)) : stitch_gaps(pm, np);
+  r.first = run_gap_stitcher(pm, vpm, traits, stitch_settings(options, tolerance, true), visitor);
   if (r.first.cancelled) return r;
-  r.second = tolerance >= 0 ? repair_t_junctions(pm, np.merge_tolerance(tolerance))
-                            : repair_t_junctions(pm, np);
+  r.second = run_gap_stitcher(pm, vpm, traits, stitch_settings(options, tolerance, false), visitor);
   return r;
 }
 
@@ -115,18 +157,19 @@ std::pair<Stitch_result, Stitch_result> stitch_with_tolerance(PolygonMesh& pm, V
 /// self-intersections is replaced by a quarter of the smallest local one, and if that still
 /// adds some, tolerance stitching is skipped (the gaps stay as holes for the filling step).
 /// Returns the tolerance to use (negative: derived) or NaN to skip.
-template <class PolygonMesh, class VertexPointMap>
-double safe_stitching_tolerance(const PolygonMesh& pm, VertexPointMap vpm,
-                                const Repair_options& options, Repair_result& result) {
+template <class PolygonMesh, class VertexPointMap, class GeomTraits>
+double safe_stitching_tolerance(const PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
+                                const Repair_options& options, Repair_result& result,
+                                Any_visitor visitor) {
   if (!options.detect_self_intersections) return options.merge_tolerance;
-  Step_timer timer(result, "stitching trial");
+  Step_timer timer(result, "stitching trial", visitor);
   Default_visitor quiet;
   double tolerance = options.merge_tolerance;
   for (int attempt = 0; attempt < 2; ++attempt) {
     PolygonMesh trial;
     CGAL::copy_face_graph(pm, trial, parameters::vertex_point_map(vpm));
-    const auto stitched =
-        stitch_with_tolerance(trial, get(CGAL::vertex_point, trial), tolerance, quiet);
+    const auto stitched = stitch_with_tolerance(trial, get(CGAL::vertex_point, trial), traits,
+                                                options, tolerance, Any_visitor(quiet));
     const std::size_t changes = stitched.first.node_merges + stitched.first.t_junctions_split +
                                 stitched.second.t_junctions_split;
     const std::size_t pairs = changes == 0 ? 0 : count_self_intersections(trial);
@@ -148,18 +191,16 @@ double safe_stitching_tolerance(const PolygonMesh& pm, VertexPointMap vpm,
   return std::numeric_limits<double>::quiet_NaN();
 }
 
-template <class PolygonMesh, class VertexPointMap, class Visitor>
-void step_tolerance_stitching(PolygonMesh& pm, VertexPointMap vpm, const Repair_options& options,
-                              Visitor& visitor, Repair_result& result) {
-  const double tolerance = safe_stitching_tolerance(pm, vpm, options, result);
+template <class PolygonMesh, class VertexPointMap, class GeomTraits>
+void step_tolerance_stitching(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
+                              const Repair_options& options, Any_visitor visitor,
+                              Repair_result& result) {
+  const double tolerance = safe_stitching_tolerance(pm, vpm, traits, options, result, visitor);
   if (std::isnan(tolerance)) return;
   {
-    Step_timer timer(result, "tolerance stitching");
+    Step_timer timer(result, "tolerance stitching", visitor);
     const Stitch_result stitched =
-        tolerance >= 0
-            ? stitch_gaps(pm, parameters::merge_tolerance(tolerance).vertex_point_map(vpm).visitor(
-                                  std::ref(visitor)))
-            : stitch_gaps(pm, parameters::vertex_point_map(vpm).visitor(std::ref(visitor)));
+        run_gap_stitcher(pm, vpm, traits, stitch_settings(options, tolerance, true), visitor);
     timer.count("node_merges", double(stitched.node_merges));
     timer.count("t_junctions_split", double(stitched.t_junctions_split));
     timer.count("edges_stitched", double(stitched.edges_stitched));
@@ -169,13 +210,9 @@ void step_tolerance_stitching(PolygonMesh& pm, VertexPointMap vpm, const Repair_
     if (stitched.cancelled) result.cancelled = true;
   }
   if (result.cancelled) return;
-  Step_timer timer(result, "T-junctions");
+  Step_timer timer(result, "T-junctions", visitor);
   const Stitch_result repaired =
-      tolerance >= 0
-          ? repair_t_junctions(pm,
-                               parameters::merge_tolerance(tolerance).vertex_point_map(vpm).visitor(
-                                   std::ref(visitor)))
-          : repair_t_junctions(pm, parameters::vertex_point_map(vpm).visitor(std::ref(visitor)));
+      run_gap_stitcher(pm, vpm, traits, stitch_settings(options, tolerance, false), visitor);
   timer.count("t_junctions_split", double(repaired.t_junctions_split));
   timer.count("edges_stitched", double(repaired.edges_stitched));
   timer.details(repaired);
@@ -187,12 +224,13 @@ void step_tolerance_stitching(PolygonMesh& pm, VertexPointMap vpm, const Repair_
 /// them (every triangle would be flat); they are closed by a fan of flat triangles that the
 /// degenerate-face step then collapses.
 template <class PolygonMesh, class VertexPointMap>
-void step_close_slits(PolygonMesh& pm, VertexPointMap vpm, Repair_result& result) {
+void step_close_slits(PolygonMesh& pm, VertexPointMap vpm, Repair_result& result,
+                      Any_visitor visitor) {
   using halfedge_descriptor = typename boost::graph_traits<PolygonMesh>::halfedge_descriptor;
   using vertex_descriptor = typename boost::graph_traits<PolygonMesh>::vertex_descriptor;
   using Point = typename boost::property_traits<VertexPointMap>::value_type;
   using Kernel = typename CGAL::Kernel_traits<Point>::Kernel;
-  Step_timer timer(result, "zero-area slits");
+  Step_timer timer(result, "zero-area slits", visitor);
   std::size_t slits = 0, faces_added = 0;
   for (halfedge_descriptor h : border_cycles(pm)) {
     std::vector<vertex_descriptor> cycle;
@@ -245,15 +283,16 @@ std::size_t remove_degenerate_components(PolygonMesh& pm, VertexPointMap vpm) {
 }
 
 template <class PolygonMesh>
-void step_non_manifold_vertices(PolygonMesh& pm, Repair_result& result) {
-  Step_timer timer(result, "non-manifold vertices");
+void step_non_manifold_vertices(PolygonMesh& pm, Repair_result& result, Any_visitor visitor) {
+  Step_timer timer(result, "non-manifold vertices", visitor);
   const std::size_t duplicated = CGAL::Polygon_mesh_processing::duplicate_non_manifold_vertices(pm);
   timer.count("vertices_duplicated", double(duplicated));
 }
 
 template <class PolygonMesh, class VertexPointMap>
-void step_degenerate_faces(PolygonMesh& pm, VertexPointMap vpm, Repair_result& result) {
-  Step_timer timer(result, "degenerate faces");
+void step_degenerate_faces(PolygonMesh& pm, VertexPointMap vpm, Repair_result& result,
+                           Any_visitor visitor) {
+  Step_timer timer(result, "degenerate faces", visitor);
   const std::size_t faces_before = count_faces(pm), vertices_before = count_vertices(pm);
   const bool all_removed = CGAL::Polygon_mesh_processing::remove_degenerate_faces(
       pm, CGAL::parameters::vertex_point_map(vpm));
@@ -264,8 +303,8 @@ void step_degenerate_faces(PolygonMesh& pm, VertexPointMap vpm, Repair_result& r
 }
 
 template <class PolygonMesh>
-void step_largest_component(PolygonMesh& pm, Repair_result& result) {
-  Step_timer timer(result, "largest component");
+void step_largest_component(PolygonMesh& pm, Repair_result& result, Any_visitor visitor) {
+  Step_timer timer(result, "largest component", visitor);
   const std::size_t faces_before = count_faces(pm);
   const std::size_t removed =
       CGAL::Polygon_mesh_processing::keep_largest_connected_components(pm, 1);
@@ -275,21 +314,13 @@ void step_largest_component(PolygonMesh& pm, Repair_result& result) {
   timer.count("faces_removed", double(result.faces_removed_with_components));
 }
 
-template <class PolygonMesh, class VertexPointMap, class Visitor>
-void step_fill_holes(PolygonMesh& pm, VertexPointMap vpm, const Repair_options& options,
-                     Visitor& visitor, Repair_result& result) {
-  Step_timer timer(result, "hole filling");
+template <class PolygonMesh, class VertexPointMap, class GeomTraits>
+void step_fill_holes(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
+                     const Repair_options& options, Any_visitor visitor, Repair_result& result) {
+  Step_timer timer(result, "hole filling", visitor);
   const std::size_t faces_before = count_faces(pm), vertices_before = count_vertices(pm);
-  const Region_fill_options& fill = options.fill;
-  result.holes = fill_holes(pm, parameters::vertex_point_map(vpm)
-                                    .fill_method(fill.method)
-                                    .fairing_continuity(fill.continuity)
-                                    .random_seed(fill.seed)
-                                    .max_hole_size(fill.max_hole_size)
-                                    .max_hole_edges(fill.max_hole_edges)
-                                    .detect_ring_holes(fill.detect_ring_holes)
-                                    .number_of_threads(fill.threads)
-                                    .visitor(std::ref(visitor)));
+  std::vector<Fill_patch<PolygonMesh>> patches;
+  result.holes = fill_holes_with_options(pm, vpm, traits, options.fill, visitor, patches);
   result.holes_too_large = result.holes.skipped;
   if (result.holes.cancelled) result.cancelled = true;
   timer.count("holes", double(result.holes.holes.size()));
@@ -301,8 +332,9 @@ void step_fill_holes(PolygonMesh& pm, VertexPointMap vpm, const Repair_options& 
 }
 
 template <class PolygonMesh, class VertexPointMap>
-void step_remove_self_intersections(PolygonMesh& pm, VertexPointMap vpm, Repair_result& result) {
-  Step_timer timer(result, "self-intersection removal");
+void step_remove_self_intersections(PolygonMesh& pm, VertexPointMap vpm, Repair_result& result,
+                                    Any_visitor visitor) {
+  Step_timer timer(result, "self-intersection removal", visitor);
   const std::size_t faces_before = count_faces(pm);
   const bool solved = CGAL::Polygon_mesh_processing::experimental::remove_self_intersections(
       pm, CGAL::parameters::vertex_point_map(vpm).preserve_genus(true));
@@ -315,8 +347,9 @@ void step_remove_self_intersections(PolygonMesh& pm, VertexPointMap vpm, Repair_
 /// back), so the verification counts self-intersections of the whole output and compares with
 /// the input count: new pairs can only come from the repair.
 template <class PolygonMesh>
-void step_verify(const PolygonMesh& pm, const Repair_options& options, Repair_result& result) {
-  Step_timer timer(result, "verification");
+void step_verify(const PolygonMesh& pm, const Repair_options& options, Repair_result& result,
+                 Any_visitor visitor) {
+  Step_timer timer(result, "verification", visitor);
   result.valid = CGAL::is_valid_polygon_mesh(pm);
   std::vector<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor> non_manifold;
   CGAL::Polygon_mesh_processing::non_manifold_vertices(pm, std::back_inserter(non_manifold));
@@ -361,27 +394,37 @@ inline void list_remaining(Repair_result& result) {
   add(result.cancelled, "cancelled before the end");
 }
 
-template <class PolygonMesh, class VertexPointMap, class Visitor>
-Repair_result run_repair_pipeline(PolygonMesh& pm, VertexPointMap vpm,
-                                  const Repair_options& options, Visitor& visitor) {
+/// The pipeline of `automatic_repair` on plain options (compiled once per mesh type).
+template <class PolygonMesh, class VertexPointMap, class GeomTraits>
+Repair_result run_repair_pipeline(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
+                                  const Repair_options& options, Any_visitor visitor) {
+#ifdef CGAL_LINKED_WITH_TBB
+  // The parallel steps (self-intersection counts, hole filling) run on TBB's pool; the limit holds
+  // for the duration of the call.
+  std::unique_ptr<tbb::global_control> limit;
+  if (options.fill.number_of_threads > 0)
+    limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                  std::size_t(options.fill.number_of_threads));
+#endif
   Repair_result result;
   result.input_vertices = count_vertices(pm);
   result.input_faces = count_faces(pm);
   if (options.detect_self_intersections) {
-    Step_timer timer(result, "input self-intersections");
+    Step_timer timer(result, "input self-intersections", visitor);
     result.self_intersections_input = count_self_intersections(pm);
     timer.count("pairs", double(result.self_intersections_input));
   }
-  step_exact_stitching(pm, result);
-  step_tolerance_stitching(pm, vpm, options, visitor, result);
-  if (!result.cancelled) step_non_manifold_vertices(pm, result);
-  if (!result.cancelled) step_close_slits(pm, vpm, result);
-  if (!result.cancelled) step_degenerate_faces(pm, vpm, result);
-  if (!result.cancelled && options.keep_largest_component) step_largest_component(pm, result);
-  if (!result.cancelled) step_fill_holes(pm, vpm, options, visitor, result);
+  step_exact_stitching(pm, result, visitor);
+  step_tolerance_stitching(pm, vpm, traits, options, visitor, result);
+  if (!result.cancelled) step_non_manifold_vertices(pm, result, visitor);
+  if (!result.cancelled) step_close_slits(pm, vpm, result, visitor);
+  if (!result.cancelled) step_degenerate_faces(pm, vpm, result, visitor);
+  if (!result.cancelled && options.keep_largest_component)
+    step_largest_component(pm, result, visitor);
+  if (!result.cancelled) step_fill_holes(pm, vpm, traits, options, visitor, result);
   if (!result.cancelled && options.repair_self_intersections)
-    step_remove_self_intersections(pm, vpm, result);
-  step_verify(pm, options, result);
+    step_remove_self_intersections(pm, vpm, result, visitor);
+  step_verify(pm, options, result, visitor);
   list_remaining(result);
   return result;
 }

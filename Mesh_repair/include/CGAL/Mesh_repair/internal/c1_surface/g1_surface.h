@@ -34,7 +34,7 @@
 // its barycentric coordinates.
 
 #include <CGAL/Mesh_repair/internal/c1_surface/local_derivative_estimation.h>
-#include <CGAL/Mesh_repair/internal/c1_surface/vec3.h>
+#include <CGAL/Mesh_repair/internal/vec3.h>
 #include <CGAL/Mesh_repair/internal/shape_prediction/bezier_patches.h>
 
 #include <CGAL/Simple_cartesian.h>
@@ -260,7 +260,7 @@ class G1_surface {
     for (std::size_t t = 0; t < triangles_.size(); ++t) {
       const Vec3 n =
           cross(point(int(t), 1) - point(int(t), 0), point(int(t), 2) - point(int(t), 0));
-      face_area_[t] = 0.5 * length(n);
+      face_area_[t] = 0.5 * norm(n);
       face_normal_[t] = normalized(n);
     }
   }
@@ -451,9 +451,9 @@ class G1_surface {
   static Curve crease_curve(const Vec3& p, const Vec3& np, const Vec3& mp, const Vec3& q,
                             const Vec3& nq, const Vec3& mq) {
     const Vec3 chord = q - p;
-    const double d = length(chord);
+    const double d = norm(chord);
     const Vec3 crease[2] = {cross(np, mp), cross(nq, mq)};
-    if (length(crease[0]) < 0.05 || length(crease[1]) < 0.05)
+    if (norm(crease[0]) < 0.05 || norm(crease[1]) < 0.05)
       return Patch::boundary_cubic(to_point(p), to_vector(normalized(np + mp)), to_point(q),
                                    to_vector(normalized(nq + mq)));
     Vec3 tangent[2];

@@ -9,6 +9,7 @@
 // vertices of that face, hence linear in the free positions: one row of A in A x_f = t.
 
 #include <CGAL/Mesh_repair/hole_filling/fill_result.h>
+#include <CGAL/Mesh_repair/internal/vec3.h>
 
 #include <algorithm>
 #include <array>
@@ -20,23 +21,14 @@ namespace Mesh_repair {
 namespace internal {
 namespace curvature_variation {
 
-using Vec3 = std::array<double, 3>;
-
-inline Vec3 operator-(const Vec3& a, const Vec3& b) {
-  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-inline double dot3(const Vec3& a, const Vec3& b) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
 /// Barycentric coordinates of the point of triangle abc closest to p (Ericson, Real-Time
 /// Collision Detection 5.1.5): a construction, so inexact arithmetic is fine.
 inline Vec3 closest_barycentric(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
   const Vec3 ab = b - a, ac = c - a, ap = p - a;
-  const double d1 = dot3(ab, ap), d2 = dot3(ac, ap);
+  const double d1 = dot(ab, ap), d2 = dot(ac, ap);
   if (d1 <= 0 && d2 <= 0) return {1, 0, 0};
   const Vec3 bp = p - b;
-  const double d3 = dot3(ab, bp), d4 = dot3(ac, bp);
+  const double d3 = dot(ab, bp), d4 = dot(ac, bp);
   if (d3 >= 0 && d4 <= d3) return {0, 1, 0};
   const double vc = d1 * d4 - d3 * d2;
   if (vc <= 0 && d1 >= 0 && d3 <= 0) {
@@ -44,7 +36,7 @@ inline Vec3 closest_barycentric(const Vec3& p, const Vec3& a, const Vec3& b, con
     return {1 - v, v, 0};
   }
   const Vec3 cp = p - c;
-  const double d5 = dot3(ab, cp), d6 = dot3(ac, cp);
+  const double d5 = dot(ab, cp), d6 = dot(ac, cp);
   if (d6 >= 0 && d5 <= d6) return {0, 0, 1};
   const double vb = d5 * d2 - d1 * d6;
   if (vb <= 0 && d2 >= 0 && d6 <= 0) {
@@ -75,7 +67,7 @@ std::vector<Vec3> discretise_polylines(const std::vector<std::vector<Point>>& po
     samples.push_back(as_vec(polyline.front()));
     for (std::size_t k = 1; k < polyline.size(); ++k) {
       const Vec3 a = as_vec(polyline[k - 1]), b = as_vec(polyline[k]);
-      const double length = std::sqrt(dot3(b - a, b - a));
+      const double length = std::sqrt(dot(b - a, b - a));
       const int pieces = spacing > 0 ? std::max(1, int(std::ceil(length / spacing))) : 1;
       for (int s = 1; s <= pieces; ++s) {
         const double t = double(s) / pieces;

@@ -39,7 +39,7 @@ void attach_constraints(const System& system, const PolygonMesh& pm,
                         const Eigen::MatrixXd& X0, const std::vector<Vec3>& targets,
                         std::vector<Linear_row>& rows, std::vector<Vec3>& right_hand_sides,
                         Curvature_deformation_report& report) {
-  auto position = [&](auto v) {
+  auto position = [&](auto v) -> Vec3 {
     const int i = system.free_index(v);
     if (i < 0) return system.position(v);
     return Vec3{X0(i, 0), X0(i, 1), X0(i, 2)};
@@ -56,7 +56,7 @@ void attach_constraints(const System& system, const PolygonMesh& pm,
         const Vec3 w = closest_barycentric(goal, a, b, c);
         Vec3 q;
         for (int k = 0; k < 3; ++k) q[k] = w[0] * a[k] + w[1] * b[k] + w[2] * c[k];
-        const double d = dot3(q - goal, q - goal);
+        const double d = dot(q - goal, q - goal);
         if (d >= best) continue;
         best = d;
         best_row = Linear_row();
@@ -176,27 +176,27 @@ void relax_tangentially(
     const std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor>& free,
     int steps) {
   using Point = typename boost::property_traits<VertexPointMap>::value_type;
-  std::vector<Vec> moved(free.size());
+  std::vector<Vec3> moved(free.size());
   for (int step = 0; step < steps; ++step) {
     for (std::size_t i = 0; i < free.size(); ++i) {
-      const Vec x = vec(get(vpm, free[i]));
-      Vec centroid{0, 0, 0}, normal{0, 0, 0};
+      const Vec3 x = to_array(get(vpm, free[i]));
+      Vec3 centroid{0, 0, 0}, normal{0, 0, 0};
       int neighbours = 0;
       for (auto h : CGAL::halfedges_around_target(halfedge(free[i], pm), pm)) {
-        const Vec u = vec(get(vpm, source(h, pm)));
+        const Vec3 u = to_array(get(vpm, source(h, pm)));
         for (int d = 0; d < 3; ++d) centroid[d] += u[d];
         ++neighbours;
         if (is_border(h, pm)) continue;
-        const Vec w = vec(get(vpm, target(next(h, pm), pm)));
-        const Vec n = cross_product(minus(x, u), minus(w, u));
+        const Vec3 w = to_array(get(vpm, target(next(h, pm), pm)));
+        const Vec3 n = cross(sub(x, u), sub(w, u));
         for (int d = 0; d < 3; ++d) normal[d] += n[d];
       }
-      Vec step_vector{0, 0, 0};
+      Vec3 step_vector{0, 0, 0};
       if (neighbours > 0)
         for (int d = 0; d < 3; ++d) step_vector[d] = centroid[d] / neighbours - x[d];
-      const double squared_normal = dot_product(normal, normal);
+      const double squared_normal = dot(normal, normal);
       if (squared_normal > 0) {
-        const double t = dot_product(step_vector, normal) / squared_normal;
+        const double t = dot(step_vector, normal) / squared_normal;
         for (int d = 0; d < 3; ++d) step_vector[d] -= t * normal[d];
       }
       moved[i] = {x[0] + step_vector[0], x[1] + step_vector[1], x[2] + step_vector[2]};

@@ -8,6 +8,7 @@
 // former border edges, and a simple ball-shaped hole punch for tests and benchmarks.
 
 #include <CGAL/Mesh_repair/hole_filling/fill_result.h>
+#include <CGAL/Mesh_repair/internal/vec3.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -24,73 +25,30 @@ namespace Mesh_repair {
 namespace internal {
 namespace curvature_variation {
 
-using Vec = std::array<double, 3>;
-
-template <class Point>
-Vec vec(const Point& p) {
-  return {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
-}
-inline Vec minus(const Vec& a, const Vec& b) {
-  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-inline Vec cross_product(const Vec& a, const Vec& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-inline double dot_product(const Vec& a, const Vec& b) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-inline double length(const Vec& a) {
-  return std::sqrt(dot_product(a, a));
-}
-
-/// Removes the faces whose three vertices lie within `radius` of `center`; returns a border
-/// halfedge of the hole (null when nothing was removed). The caller checks that the selection
-/// was a disc (one new border cycle, valid mesh).
-template <class PolygonMesh, class Point>
-typename boost::graph_traits<PolygonMesh>::halfedge_descriptor punch_ball_hole(PolygonMesh& pm,
-                                                                               const Point& center,
-                                                                               double radius) {
-  using GT = boost::graph_traits<PolygonMesh>;
-  auto vpm = get(CGAL::vertex_point, pm);
-  const Vec c = vec(center);
-  std::vector<typename GT::face_descriptor> doomed;
-  for (auto f : faces(pm)) {
-    bool inside = true;
-    for (auto v : CGAL::vertices_around_face(halfedge(f, pm), pm))
-      inside = inside && length(minus(vec(get(vpm, v)), c)) < radius;
-    if (inside) doomed.push_back(f);
-  }
-  if (doomed.empty()) return GT::null_halfedge();
-  for (auto f : doomed) CGAL::Euler::remove_face(halfedge(f, pm), pm);
-  for (auto h : halfedges(pm))
-    if (is_border(h, pm) && length(minus(vec(get(vpm, target(h, pm))), c)) < 1.5 * radius) return h;
-  return GT::null_halfedge();
-}
-
 /// Discrete mean curvature magnitude at v: |cotangent Laplacian| / (2 x barycentric area).
 template <class PolygonMesh, class VertexPointMap>
 double mean_curvature(const PolygonMesh& pm, VertexPointMap vpm,
                       typename boost::graph_traits<PolygonMesh>::vertex_descriptor v) {
-  Vec laplacian{0, 0, 0};
+  Vec3 laplacian{0, 0, 0};
   double area = 0;
-  const Vec pv = vec(get(vpm, v));
+  const Vec3 pv = to_array(get(vpm, v));
   for (auto h : CGAL::halfedges_around_target(v, pm)) {
-    const Vec pu = vec(get(vpm, source(h, pm)));
+    const Vec3 pu = to_array(get(vpm, source(h, pm)));
     double weight = 0;
     for (auto g : {h, opposite(h, pm)}) {
       if (is_border(g, pm)) continue;
-      const Vec pw = vec(get(vpm, target(next(g, pm), pm)));
-      const Vec a = minus(pv, pw), b = minus(pu, pw);
-      const double s = length(cross_product(a, b));
-      if (s > 0) weight += 0.5 * dot_product(a, b) / s;
+      const Vec3 pw = to_array(get(vpm, target(next(g, pm), pm)));
+      const Vec3 a = sub(pv, pw), b = sub(pu, pw);
+      const double s = norm(cross(a, b));
+      if (s > 0) weight += 0.5 * dot(a, b) / s;
     }
     for (int k = 0; k < 3; ++k) laplacian[k] += weight * (pu[k] - pv[k]);
     if (!is_border(h, pm)) {
-      const Vec pw = vec(get(vpm, target(next(h, pm), pm)));
-      area += length(cross_product(minus(pu, pv), minus(pw, pv))) / 6.0;
+      const Vec3 pw = to_array(get(vpm, target(next(h, pm), pm)));
+      area += norm(cross(sub(pu, pv), sub(pw, pv))) / 6.0;
     }
   }
-  return area > 0 ? length(laplacian) / (2.0 * area) : 0.0;
+  return area > 0 ? norm(laplacian) / (2.0 * area) : 0.0;
 }
 
 /// Curvature jump across the contour of one patch: for each contour vertex, the mean curvature
@@ -139,10 +97,10 @@ double contour_normal_deviation_deg(const PolygonMesh& pm, VertexPointMap vpm,
   std::set<face_descriptor> patch_faces(patch.faces.begin(), patch.faces.end());
   auto normal = [&](face_descriptor f) {
     auto h = halfedge(f, pm);
-    const Vec a = vec(get(vpm, source(h, pm))), b = vec(get(vpm, target(h, pm))),
-              c = vec(get(vpm, target(next(h, pm), pm)));
-    Vec n = cross_product(minus(b, a), minus(c, a));
-    const double l = length(n);
+    const Vec3 a = to_array(get(vpm, source(h, pm))), b = to_array(get(vpm, target(h, pm))),
+               c = to_array(get(vpm, target(next(h, pm), pm)));
+    Vec3 n = cross(sub(b, a), sub(c, a));
+    const double l = norm(n);
     if (l > 0)
       for (double& x : n) x /= l;
     return n;
@@ -153,7 +111,7 @@ double contour_normal_deviation_deg(const PolygonMesh& pm, VertexPointMap vpm,
     for (auto h : CGAL::halfedges_around_face(halfedge(f, pm), pm)) {
       auto o = opposite(h, pm);
       if (is_border(o, pm) || patch_faces.count(face(o, pm))) continue;
-      const double cosine = std::clamp(dot_product(normal(f), normal(face(o, pm))), -1.0, 1.0);
+      const double cosine = std::clamp(dot(normal(f), normal(face(o, pm))), -1.0, 1.0);
       sum += std::acos(cosine) * 180.0 / CGAL_PI;
       ++count;
     }

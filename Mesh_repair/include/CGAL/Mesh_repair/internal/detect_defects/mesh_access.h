@@ -6,7 +6,7 @@
 // What every detection step reads: the mesh, its point map, traits and index maps, bundled once
 // so each step is a short function of one argument.
 
-#include <CGAL/Mesh_repair/internal/detect_defects/defect_report.h>
+#include <CGAL/Mesh_repair/defect_report.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>

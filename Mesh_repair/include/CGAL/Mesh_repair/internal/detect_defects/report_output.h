@@ -6,8 +6,8 @@
 // The two faces of a Defect_report: JSON (schema in doc/report_schema.md) and a readable text
 // summary.
 
-#include <CGAL/Mesh_repair/internal/detect_defects/defect_report.h>
-#include <CGAL/Mesh_repair/internal/json.h>
+#include <CGAL/Mesh_repair/defect_report.h>
+#include <CGAL/Mesh_repair/json_writer.h>
 #include <CGAL/Mesh_repair/io.h>
 
 #include <cmath>
@@ -191,7 +191,7 @@ inline void write_components(Json_writer& json, const std::vector<Connected_comp
 
 /// Writes `report` as one JSON object: the integer counts at top level (combined with the soup
 /// stage when attached), then the details. Schema: doc/report_schema.md.
-inline void write_json(internal::Json_writer& json, const Defect_report& r) {
+inline void write_json(Json_writer& json, const Defect_report& r) {
   const Defect_counts c = counts(r);
   json.begin_object()
       .field("vertices", r.vertices)

@@ -45,6 +45,8 @@
 /// and `Shape_smoothness_fitness` (eq. 7.6-7.9, mesh optimisation).
 /// Output triangles are (i, j, k) with i < j < k, which is the polygon's orientation.
 
+#include <CGAL/Mesh_repair/internal/vec3.h>
+
 #include <CGAL/Random.h>
 #include <CGAL/number_utils.h>
 
@@ -198,16 +200,14 @@ Chord_table valid_chords(const std::vector<typename Kernel::Point_3>& points,
   if (n < 4) return table;
 
   // Projection onto the Newell plane; the polygon is counterclockwise there.
-  const Vector_3 normal = detail::newell_normal<Kernel>(points);
-  Vector_3 u = std::abs(normal.x()) < 0.9 ? CGAL::cross_product(normal, Vector_3(1, 0, 0))
-                                          : CGAL::cross_product(normal, Vector_3(0, 1, 0));
-  u = u / std::sqrt(u.squared_length());
-  const Vector_3 v = CGAL::cross_product(normal, u);
+  const Vector_3 normal = detail::newell_normal<Kernel>(points);  // unit
+  Vec3 u, v;
+  tangent_frame(to_array(normal), u, v, 0.9);
   std::vector<Point_2> q;
   q.reserve(n);
   for (const Point_3& p : points) {
-    const Vector_3 d = p - points[0];
-    q.emplace_back(d * u, d * v);
+    const Vec3 d = to_array(p - points[0]);
+    q.emplace_back(dot(d, u), dot(d, v));
   }
   auto orientation_2 = kernel.orientation_2_object();
   auto do_intersect_2 = kernel.do_intersect_2_object();

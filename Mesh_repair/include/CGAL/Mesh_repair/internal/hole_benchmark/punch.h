@@ -14,6 +14,7 @@
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Random.h>
+#include <CGAL/squared_distance_3.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -426,6 +427,70 @@ auto punch_holes(PolygonMesh& pm, VertexPointMap vpm, std::size_t number_of_hole
                        std::to_string(result.attempts) +
                        " centres (holes keep away from borders and from each other)";
   return result;
+}
+
+/// The one simple hole puncher of the tests and benchmarks (the ground-truth benchmark grows its
+/// holes with `punch_holes` above): removes the faces whose vertices all lie within `radius` of
+/// `center` and that are reached from the first such face (in face order) through such faces,
+/// then, repeatedly, the faces left hanging by two border edges, so that the hole's border is
+/// one simple cycle in the usual cases. Returns the first border halfedge (in halfedge order)
+/// whose target lies within 1.5 `radius` of `center`, the null halfedge when no face was
+/// inside; `removed`, when given, receives the number of faces removed.
+template <class PolygonMesh, class Point>
+typename boost::graph_traits<PolygonMesh>::halfedge_descriptor punch_ball_hole(
+    PolygonMesh& pm, const Point& center, double radius, std::size_t* removed = nullptr) {
+  using GT = boost::graph_traits<PolygonMesh>;
+  using face_descriptor = typename GT::face_descriptor;
+  auto vpm = get(CGAL::vertex_point, pm);
+  auto within = [&](typename GT::vertex_descriptor v, double r) {
+    return CGAL::squared_distance(get(vpm, v), center) <= r * r;
+  };
+  auto inside = [&](face_descriptor f) {
+    for (auto v : CGAL::vertices_around_face(halfedge(f, pm), pm))
+      if (!within(v, radius)) return false;
+    return true;
+  };
+  std::set<face_descriptor> region;
+  std::queue<face_descriptor> queue;
+  for (face_descriptor f : faces(pm)) {
+    if (inside(f)) {
+      queue.push(f);
+      region.insert(f);
+      break;
+    }
+  }
+  while (!queue.empty()) {
+    const face_descriptor f = queue.front();
+    queue.pop();
+    for (auto h : CGAL::halfedges_around_face(halfedge(f, pm), pm)) {
+      const face_descriptor g = face(opposite(h, pm), pm);
+      if (g != GT::null_face() && !region.count(g) && inside(g)) {
+        region.insert(g);
+        queue.push(g);
+      }
+    }
+  }
+  for (face_descriptor f : region) CGAL::Euler::remove_face(halfedge(f, pm), pm);
+  std::size_t count = region.size();
+  for (bool again = !region.empty(); again;) {
+    again = false;
+    for (face_descriptor f : faces(pm)) {
+      int border_edges = 0;
+      for (auto h : CGAL::halfedges_around_face(halfedge(f, pm), pm))
+        border_edges += is_border(opposite(h, pm), pm) ? 1 : 0;
+      if (border_edges >= 2) {
+        CGAL::Euler::remove_face(halfedge(f, pm), pm);
+        ++count;
+        again = true;
+        break;
+      }
+    }
+  }
+  if (removed) *removed = count;
+  if (count == 0) return GT::null_halfedge();
+  for (auto h : halfedges(pm))
+    if (is_border(h, pm) && within(target(h, pm), 1.5 * radius)) return h;
+  return GT::null_halfedge();
 }
 
 }  // namespace hole_benchmark

@@ -240,7 +240,9 @@ class Advancing_front {
     triangle_cell_ = 3.0 * mean_length_;
     const double expected = std::max(norm(vector_area), perimeter * mean_length_) /
                             (0.433 * mean_length_ * mean_length_);
-    max_triangles_ = std::size_t(options_.max_triangles_factor * expected) + 4 * n + 16;
+    // Clamped before the conversion: on degenerate borders `expected` can be huge or NaN.
+    const double allowed = options_.max_triangles_factor * expected;
+    max_triangles_ = std::size_t(allowed >= 0 && allowed < 1e8 ? allowed : 1e8) + 4 * n + 16;
     {
       const std::size_t guess = std::min<std::size_t>(std::size_t(expected) + 2 * n, 1u << 22);
       edges_.reserve(2 * guess + input.existing_edges.size());
@@ -348,10 +350,17 @@ class Advancing_front {
     return none;
   }
   bool on_front(std::size_t p) const { return first_out_[p] != none; }
+  /// floor(x / cell) as an integer, clamped to +-2^52 (NaN to 0) so that the conversion is
+  /// defined for any coordinate range: a file with coordinates from 1e-12 to 1e33 gives huge
+  /// quotients, whose conversion to int64 was undefined.
+  static std::int64_t cell_index(double x, double cell) {
+    const double q = std::floor(x / cell);
+    constexpr double limit = 4503599627370496.0;  // 2^52
+    if (!(q == q)) return 0;
+    return std::int64_t(std::max(-limit, std::min(limit, q)));
+  }
   std::uint64_t cell_key(const Vec3& p) const {
-    auto c = [&](double x) {
-      return std::uint64_t(std::int64_t(std::floor(x / cell_)) & 0x1fffff);
-    };
+    auto c = [&](double x) { return std::uint64_t(cell_index(x, cell_) & 0x1fffff); };
     return (c(p[0]) << 42) | (c(p[1]) << 21) | c(p[2]);
   }
   // The grid holds the front's points only: a point joins it with its first outgoing front edge
@@ -442,9 +451,7 @@ class Advancing_front {
     Tangent_frame f;
     f.origin = points_[v];
     f.n = normal(v);
-    const Vec3 helper = std::abs(f.n[0]) < 0.6 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
-    f.u = normalized(cross(f.n, helper));
-    f.v = cross(f.n, f.u);
+    tangent_frame(f.n, f.u, f.v);
     return f;
   }
 
@@ -455,7 +462,7 @@ class Advancing_front {
     std::vector<std::size_t>& found = near_points_;
     found.clear();
     const Vec3& c = frame.origin;
-    const auto base = [&](double x) { return std::int64_t(std::floor(x / cell_)); };
+    const auto base = [&](double x) { return cell_index(x, cell_); };
     std::array<std::int64_t, 3> lo, hi;
     for (int d = 0; d < 3; ++d) {
       lo[d] = base(c[d] - radius);
@@ -585,16 +592,22 @@ class Advancing_front {
   }
 
   /// Calls f on the cells of the triangle grid overlapped by `box`; false (and no call) when the
-  /// box spans more than 64 cells along an axis: such triangles are kept in `large_` and such
-  /// queries scan every stored triangle.
+  /// box spans more than 64 cells along an axis or more than 512 cells in all: such triangles
+  /// are kept in `large_` and such queries scan every stored triangle (the same exact tests, so
+  /// the same result). The bound on the count keeps the grid's memory proportional to the
+  /// number of triangles whatever their shape (a long thin triangle across 64 x 64 x 64 cells
+  /// filed 274,625 entries).
   template <class F>
   bool for_cells(const CGAL::Bbox_3& box, F f) const {
     std::array<std::int64_t, 3> lo, hi;
+    std::int64_t cells = 1;
     for (int d = 0; d < 3; ++d) {
-      lo[d] = std::int64_t(std::floor(box.min(d) / triangle_cell_));
-      hi[d] = std::int64_t(std::floor(box.max(d) / triangle_cell_));
+      lo[d] = cell_index(box.min(d), triangle_cell_);
+      hi[d] = cell_index(box.max(d), triangle_cell_);
       if (!(hi[d] - lo[d] <= 64)) return false;
+      cells *= hi[d] - lo[d] + 1;
     }
+    if (cells > 512) return false;
     for (std::int64_t i = lo[0]; i <= hi[0]; ++i)
       for (std::int64_t j = lo[1]; j <= hi[1]; ++j)
         for (std::int64_t k = lo[2]; k <= hi[2]; ++k) f(triangle_cell_key({i, j, k}));
@@ -1158,7 +1171,7 @@ class Advancing_front {
           const CGAL::Bbox_3 &a = stored_[i->index].box, &b = stored_[j->index].box;
           std::array<std::int64_t, 3> lowest;
           for (int d = 0; d < 3; ++d)
-            lowest[d] = std::int64_t(std::floor(std::max(a.min(d), b.min(d)) / triangle_cell_));
+            lowest[d] = cell_index(std::max(a.min(d), b.min(d)), triangle_cell_);
           if (triangle_cell_key(lowest) != cell) continue;
           if (meets(i->index, j->index)) return false;
         }

@@ -6,47 +6,31 @@
 // Walking border cycles (closed loops of border halfedges) and describing them, shared by every
 // hole-filling method, the dispatcher and the benchmarks.
 
-#include <CGAL/Mesh_repair/quality.h>
+#include <CGAL/Mesh_repair/internal/vec3.h>
 
+#include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <limits>
-#include <unordered_set>
 #include <vector>
 
 namespace CGAL {
 namespace Mesh_repair {
 namespace internal {
 
-using Vec3 = std::array<double, 3>;
-
-inline Vec3 add(const Vec3& a, const Vec3& b) {
-  return {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
-}
-inline Vec3 scale(const Vec3& a, double s) {
-  return {a[0] * s, a[1] * s, a[2] * s};
-}
-inline Vec3 normalized(const Vec3& a) {
-  const double n = norm(a);
-  return n > 0 ? scale(a, 1.0 / n) : Vec3{0, 0, 0};
-}
-
-/// One halfedge per border cycle of `pm`, in face-index-free order of the halfedge iteration.
+/// One halfedge per border cycle of `pm`, in the order of the halfedge iteration: CGAL's
+/// `extract_boundary_cycles`, the one border-cycle enumeration of the library (detection,
+/// filling, repair and the tool all call this).
 template <class PolygonMesh>
 std::vector<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor> border_cycles(
     const PolygonMesh& pm) {
-  using halfedge_descriptor = typename boost::graph_traits<PolygonMesh>::halfedge_descriptor;
-  std::vector<halfedge_descriptor> cycles;
-  std::unordered_set<halfedge_descriptor> visited;
-  for (halfedge_descriptor h : halfedges(pm)) {
-    if (!is_border(h, pm) || visited.count(h)) continue;
-    cycles.push_back(h);
-    for (halfedge_descriptor c : halfedges_around_face(h, pm)) visited.insert(c);
-  }
+  std::vector<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor> cycles;
+  CGAL::Polygon_mesh_processing::extract_boundary_cycles(pm, std::back_inserter(cycles));
   return cycles;
 }
 

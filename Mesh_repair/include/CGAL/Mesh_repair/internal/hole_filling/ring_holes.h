@@ -39,9 +39,7 @@ struct Plane_frame {
 
   Plane_frame() = default;
   Plane_frame(const Vec3& o, const Vec3& n) : origin(o), normal(normalized(n)) {
-    const Vec3 helper = std::abs(normal[0]) < 0.6 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
-    u = normalized(cross(normal, helper));
-    v = cross(normal, u);
+    tangent_frame(normal, u, v);
   }
   Epick::Point_2 project(const Vec3& p) const {
     const Vec3 d = sub(p, origin);
@@ -51,16 +49,21 @@ struct Plane_frame {
 };
 
 /// Winding number of `polygon` around `p`, decided with exact orientation tests (Sunday's
-/// crossing rule); points on the polygon count as outside.
+/// crossing rule); points on the polygon count as outside (winding number 0).
 inline int winding_number(const std::vector<Epick::Point_2>& polygon, const Epick::Point_2& p) {
   int winding = 0;
   const std::size_t n = polygon.size();
   for (std::size_t k = 0; k < n; ++k) {
     const Epick::Point_2& a = polygon[k];
     const Epick::Point_2& b = polygon[(k + 1) % n];
+    const CGAL::Orientation o = CGAL::orientation(a, b, p);
+    if (o == CGAL::COLLINEAR && std::min(a.x(), b.x()) <= p.x() &&
+        p.x() <= std::max(a.x(), b.x()) && std::min(a.y(), b.y()) <= p.y() &&
+        p.y() <= std::max(a.y(), b.y()))
+      return 0;
     if (a.y() <= p.y()) {
-      if (b.y() > p.y() && CGAL::orientation(a, b, p) == CGAL::LEFT_TURN) ++winding;
-    } else if (b.y() <= p.y() && CGAL::orientation(a, b, p) == CGAL::RIGHT_TURN) {
+      if (b.y() > p.y() && o == CGAL::LEFT_TURN) ++winding;
+    } else if (b.y() <= p.y() && o == CGAL::RIGHT_TURN) {
       --winding;
     }
   }
@@ -75,36 +78,49 @@ std::vector<Vec3> cycle_points(typename boost::graph_traits<PolygonMesh>::halfed
   return points;
 }
 
-/// Groups border cycles into holes. A cycle whose vector area points against the normals of the
-/// faces along it bounds an island (the island lies to the left of its border halfedges, so its
-/// cycle turns the other way round than a hole's). Each island is given to the smallest hole
-/// whose cycle, projected onto its own plane (centroid, vector area), contains every island
-/// vertex (exact orientation tests) and whose slab of half-width its diameter holds the island.
-/// Islands in no hole, and every cycle when `detect` is false, stay holes of their own.
+inline double cosine(const Vec3& a, const Vec3& b) {
+  const double n = norm(a) * norm(b);
+  return n > 0 ? dot(a, b) / n : 0.0;
+}
+
+/// The one ring-hole test (thesis 4.4), shared by `detect_defects` (which reports islands) and
+/// `fill_holes` (which bridges them): for each cycle of `cycles`, the index in `cycles` of the
+/// hole it is an island of, or -1.
+///
+/// Border halfedges run counter-clockwise around a hole seen from the side the surface faces,
+/// and clockwise around the outer border of a patch (an island lies to the left of its border
+/// halfedges). So a cycle is a hole when its vector area points along the normals of the faces
+/// along it (cosine above 0.5) and the border of an island when it points against them (cosine
+/// below -0.5). An island belongs to a hole when it faces the same way as the surface around
+/// the hole (the normals along both cycles make an acute angle: an island turned over cannot be
+/// joined to its hole by a strip without a fold; that is an orientation defect, not a ring
+/// hole) and every island vertex lies strictly inside the hole's cycle projected onto the hole's
+/// plane (centroid, vector area; exact orientation tests), within the slab of half-width the
+/// hole's diameter. Among several such holes the smallest (vector area) is kept.
 template <class PolygonMesh, class VertexPointMap>
-std::vector<Hole_group<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor>>
-group_ring_holes(
+std::vector<long> ring_hole_owners(
     const PolygonMesh& pm, VertexPointMap vpm,
-    const std::vector<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor>& cycles,
-    bool detect) {
-  using halfedge_descriptor = typename boost::graph_traits<PolygonMesh>::halfedge_descriptor;
-  std::vector<Hole_group<halfedge_descriptor>> groups;
+    const std::vector<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor>& cycles) {
+  std::vector<long> owner(cycles.size(), -1);
+  if (cycles.size() < 2) return owner;
   std::vector<Border_cycle_geometry> geometry;
-  std::vector<bool> is_island(cycles.size(), false);
+  std::vector<bool> is_hole(cycles.size(), false), is_island(cycles.size(), false);
   for (std::size_t k = 0; k < cycles.size(); ++k) {
     geometry.push_back(cycle_geometry(cycles[k], pm, vpm));
-    is_island[k] = detect && dot(geometry[k].vector_area, geometry[k].ring_normal) < 0;
+    const double turn = cosine(geometry[k].vector_area, geometry[k].ring_normal);
+    is_hole[k] = turn > 0.5;
+    is_island[k] = turn < -0.5;
   }
-  std::vector<int> owner(cycles.size(), -1);
   for (std::size_t island = 0; island < cycles.size(); ++island) {
     if (!is_island[island]) continue;
     const std::vector<Vec3> island_points = cycle_points(cycles[island], pm, vpm);
     double best_area = std::numeric_limits<double>::max();
     for (std::size_t hole = 0; hole < cycles.size(); ++hole) {
-      if (is_island[hole]) continue;
+      if (!is_hole[hole]) continue;
       const Border_cycle_geometry& g = geometry[hole];
       const double area = norm(g.vector_area);
       if (area == 0 || area >= best_area) continue;
+      if (dot(geometry[island].ring_normal, g.ring_normal) <= 0) continue;
       if (norm(sub(geometry[island].centroid, g.centroid)) > g.diameter) continue;
       const Plane_frame frame(g.centroid, g.vector_area);
       std::vector<Epick::Point_2> polygon;
@@ -116,14 +132,29 @@ group_ring_holes(
           });
       if (inside) {
         best_area = area;
-        owner[island] = int(hole);
+        owner[island] = long(hole);
       }
     }
   }
-  std::vector<int> group_of(cycles.size(), -1);
+  return owner;
+}
+
+/// Groups border cycles into holes: each island cycle of `ring_hole_owners` goes with its hole;
+/// islands in no hole, and every cycle when `detect` is false, stay holes of their own.
+template <class PolygonMesh, class VertexPointMap>
+std::vector<Hole_group<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor>>
+group_ring_holes(
+    const PolygonMesh& pm, VertexPointMap vpm,
+    const std::vector<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor>& cycles,
+    bool detect) {
+  using halfedge_descriptor = typename boost::graph_traits<PolygonMesh>::halfedge_descriptor;
+  std::vector<Hole_group<halfedge_descriptor>> groups;
+  const std::vector<long> owner =
+      detect ? ring_hole_owners(pm, vpm, cycles) : std::vector<long>(cycles.size(), -1);
+  std::vector<long> group_of(cycles.size(), -1);
   for (std::size_t k = 0; k < cycles.size(); ++k) {
     if (owner[k] >= 0) continue;
-    group_of[k] = int(groups.size());
+    group_of[k] = long(groups.size());
     groups.push_back({cycles[k], {}});
   }
   for (std::size_t k = 0; k < cycles.size(); ++k) {

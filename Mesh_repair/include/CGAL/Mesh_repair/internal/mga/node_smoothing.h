@@ -100,7 +100,11 @@ class Node_smoother {
 #ifdef CGAL_LINKED_WITH_TBB
     // One arena for all colour classes and sweeps (creating one per class costs thread start-up
     // and hand-over each time).
-    if (settings.threads > 1) arena_ = std::make_unique<tbb::task_arena>(settings.threads);
+    // 0: TBB's default number of threads (every operator's default).
+    if (settings.threads == 0)
+      arena_ = std::make_unique<tbb::task_arena>(tbb::task_arena::automatic);
+    else if (settings.threads > 1)
+      arena_ = std::make_unique<tbb::task_arena>(settings.threads);
 #endif
   }
 
@@ -271,7 +275,7 @@ class Node_smoother {
     double edge_length = 0;
     for (const auto& element : star.elements()) {
       normal += normalized(element.reference_normal);
-      edge_length += length(mesh_.points[element.ring[1]] - origin);
+      edge_length += norm(mesh_.points[element.ring[1]] - origin);
     }
     edge_length /= double(star.elements().size());
     Vec3 t1, t2;

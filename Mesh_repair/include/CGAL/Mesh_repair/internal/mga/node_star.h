@@ -6,7 +6,7 @@
 // Index arrays of a triangle / quad mesh and the "star" of a node: its incident elements with the
 // node first, the fitness of eq. 5 / eq. 8 for a trial position, and the fold test.
 
-#include <CGAL/Mesh_repair/internal/c1_surface/vec3.h>
+#include <CGAL/Mesh_repair/internal/vec3.h>
 #include <CGAL/Mesh_repair/quality.h>
 
 #include <algorithm>
@@ -152,7 +152,7 @@ class Node_star {
         // alpha (eq. 4), as quality.h computes it, sharing the cross product with the fold
         // screen and the node-independent edge with the previous calls.
         const double denominator = dot(ab, ab) + element.fixed_edge_squared + dot(ac, ac);
-        quality = denominator == 0 ? 0 : 2.0 * std::sqrt(3.0) * length(normal) / denominator;
+        quality = denominator == 0 ? 0 : 2.0 * std::sqrt(3.0) * norm(normal) / denominator;
       } else {
         corners[0] = position;
         for (int i = 1; i < 4; ++i) corners[i] = element.corners[i];

@@ -10,6 +10,7 @@
 #include <CGAL/Mesh_repair/internal/optimize_mesh/region.h>
 #include <CGAL/Mesh_repair/internal/optimize_mesh/retriangulate_region.h>
 #include <CGAL/Mesh_repair/internal/optimize_mesh/weighing_factor.h>
+#include <CGAL/Mesh_repair/optimization_result.h>
 #include <CGAL/Mesh_repair/visitor.h>
 
 #include <CGAL/Random.h>
@@ -26,32 +27,6 @@
 
 namespace CGAL {
 namespace Mesh_repair {
-
-/// What `optimize_mesh()` does to the regions it removes.
-enum class Optimization_mode {
-  reduction,  ///< thesis 7.2.3(a): remove the triangles around the nodes of an element
-  quality     ///< thesis 7.2.3(b): re-triangulate the element and its edge neighbours
-};
-
-/// What `optimize_mesh()` did.
-struct Optimization_result {
-  std::size_t input_faces = 0, output_faces = 0;
-  std::size_t passes = 0;
-  std::size_t regions_replaced = 0;
-  // Regions left as they were, by reason:
-  std::size_t regions_duplicate_edge = 0;     ///< a new edge would duplicate an existing one
-  std::size_t regions_fold_or_crease = 0;     ///< a new normal would turn away, or a crease appear
-  std::size_t regions_self_intersection = 0;  ///< a new triangle would cross the surroundings
-  std::size_t regions_not_better = 0;         ///< the GA did not beat the old triangles
-  std::size_t regions_too_far = 0;  ///< reduction: the patch would leave removed points too far
-  std::size_t regions_without_triangulation = 0;
-  std::size_t regions_refused_by_mesh = 0;  ///< rolled back
-  std::size_t corner_nodes = 0;             ///< "vertex" nodes at the first classification
-  std::size_t feature_edges = 0;            ///< at the first classification
-  bool target_reached = false;
-  bool cancelled = false;
-  const char* stop_reason = "";
-};
 
 namespace internal {
 namespace optimize {
@@ -173,7 +148,7 @@ class Optimizer {
     return std::size_t(std::distance(faces(pm_).begin(), faces(pm_).end()));
   }
 
-  Unit_normal unit_normal(face_descriptor f) const {
+  Vec3 unit_normal(face_descriptor f) const {
     const halfedge_descriptor h = halfedge(f, pm_);
     const auto& a = get(vpm_, source(h, pm_));
     const auto n = CGAL::cross_product(get(vpm_, target(h, pm_)) - a,
@@ -194,9 +169,9 @@ class Optimizer {
 
   template <class NormalMap>
   double node_weighing_factor(vertex_descriptor v, const NormalMap& normals) const {
-    std::vector<Unit_normal>& star = star_scratch_;
+    std::vector<Vec3>& star = star_scratch_;
     star.clear();
-    Unit_normal mean{0, 0, 0};
+    Vec3 mean{0, 0, 0};
     for (face_descriptor f : faces_around_target(halfedge(v, pm_), pm_)) {
       if (f == GT::null_face()) continue;
       star.push_back(get(normals, f));
@@ -254,7 +229,7 @@ class Optimizer {
     std::vector<Candidate> candidates;
     const bool reduction = options_.mode == Optimization_mode::reduction;
     std::vector<face_descriptor> affected;
-    std::vector<Unit_normal> affected_normals;
+    std::vector<Vec3> affected_normals;
     std::vector<vertex_descriptor> removed;
     if (reduction && options_.single_node_regions) {
       for (vertex_descriptor v : vertices(pm_)) {
@@ -319,7 +294,7 @@ class Optimizer {
     double n[3] = {0, 0, 0}, c[3] = {0, 0, 0};
     int count = 0;
     for (face_descriptor f : region_faces) {
-      const Unit_normal& u = get(normals, f);
+      const Vec3& u = get(normals, f);
       const double a = get(areas, f);
       for (int k = 0; k < 3; ++k) n[k] += a * u[k];
       for (vertex_descriptor v : vertices_around_face(halfedge(f, pm_), pm_)) {
@@ -439,7 +414,7 @@ class Optimizer {
       for (const auto& polygon : region.polygons) {
         if (polygon.faces.empty()) continue;
         error = std::max(error, estimated_error(polygon.faces, removed, normals, areas));
-        std::vector<Unit_normal> side;
+        std::vector<Vec3> side;
         for (std::size_t i = 1; i < polygon.faces.size(); ++i)
           side.push_back(get(normals, polygon.faces[i]));
         for (face_descriptor g : polygon.faces) area += get(areas, g);
@@ -458,8 +433,8 @@ class Optimizer {
     auto direction = [this](vertex_descriptor from, vertex_descriptor to) {
       const auto d = get(vpm_, to) - get(vpm_, from);
       const double length = std::sqrt(CGAL::to_double(d.squared_length()));
-      return Unit_normal{CGAL::to_double(d.x()) / length, CGAL::to_double(d.y()) / length,
-                         CGAL::to_double(d.z()) / length};
+      return Vec3{CGAL::to_double(d.x()) / length, CGAL::to_double(d.y()) / length,
+                  CGAL::to_double(d.z()) / length};
     };
     return normal_deviation(direction(a, v), direction(v, b));
   }
@@ -483,7 +458,7 @@ class Optimizer {
   }
 
   std::size_t run_pass(Optimization_result& result, std::size_t& face_count, bool first) {
-    auto normals = get(CGAL::dynamic_face_property_t<Unit_normal>(), pm_);
+    auto normals = get(CGAL::dynamic_face_property_t<Vec3>(), pm_);
     auto areas = get(CGAL::dynamic_face_property_t<double>(), pm_);
     for (face_descriptor f : faces(pm_)) {
       put(normals, f, unit_normal(f));
@@ -615,7 +590,7 @@ class Optimizer {
   // shape or validity refusal); reset when the node's neighbourhood changes.
   std::optional<Refused_map> refused_;
   double excess_ = 0;
-  mutable std::vector<Unit_normal> star_scratch_;
+  mutable std::vector<Vec3> star_scratch_;
   double reached_ = 0;  // largest distance of an accepted patch
   bool shared_polygons_ = false;
   double quantile_ = 0.5;

@@ -7,9 +7,9 @@
 // unit normals B_i of the affected elements: d_i = |B_i - A|, d = d_avg + (d_max - d_min).
 // Small d = nearly planar neighbourhood = removed first.
 
+#include <CGAL/Mesh_repair/internal/vec3.h>
+
 #include <algorithm>
-#include <array>
-#include <cmath>
 #include <vector>
 
 namespace CGAL {
@@ -17,18 +17,15 @@ namespace Mesh_repair {
 namespace internal {
 namespace optimize {
 
-using Unit_normal = std::array<double, 3>;
-
-inline double normal_deviation(const Unit_normal& a, const Unit_normal& b) {
-  const double x = b[0] - a[0], y = b[1] - a[1], z = b[2] - a[2];  // eq. 7.1
-  return std::sqrt(x * x + y * y + z * z);                         // eq. 7.2
+inline double normal_deviation(const Vec3& a, const Vec3& b) {
+  return norm(b - a);  // eq. 7.1-7.2
 }
 
 /// Eq. 7.3-7.4 over `affected` (0 when there is none).
-inline double weighing_factor(const Unit_normal& chosen, const std::vector<Unit_normal>& affected) {
+inline double weighing_factor(const Vec3& chosen, const std::vector<Vec3>& affected) {
   if (affected.empty()) return 0;
   double sum = 0, lowest = 4, highest = 0;
-  for (const Unit_normal& b : affected) {
+  for (const Vec3& b : affected) {
     const double d = normal_deviation(chosen, b);
     sum += d;
     lowest = std::min(lowest, d);

@@ -9,6 +9,7 @@
 
 #include <CGAL/Mesh_repair/internal/cubic_curves.h>
 #include <CGAL/Mesh_repair/internal/shape_prediction/shape_estimate.h>
+#include <CGAL/Mesh_repair/internal/vec3.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -86,15 +87,9 @@ typename Kernel::Vector_3 fitted_vertex_normal(
   }
   if (ring.size() < 9) return n0;
   const auto& pv = get(vpm, v);
-  const double n[3] = {CGAL::to_double(n0.x()), CGAL::to_double(n0.y()), CGAL::to_double(n0.z())};
-  const double helper[3] = {std::abs(n[0]) < 0.6 ? 1.0 : 0.0, std::abs(n[0]) < 0.6 ? 0.0 : 1.0,
-                            0.0};
-  double u[3] = {n[1] * helper[2] - n[2] * helper[1], n[2] * helper[0] - n[0] * helper[2],
-                 n[0] * helper[1] - n[1] * helper[0]};
-  const double lu = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
-  for (double& c : u) c /= lu;
-  const double w[3] = {n[1] * u[2] - n[2] * u[1], n[2] * u[0] - n[0] * u[2],
-                       n[0] * u[1] - n[1] * u[0]};
+  const Vec3 n = to_array(n0);
+  Vec3 u, w;
+  tangent_frame(n, u, w);
   std::vector<std::array<double, 3>> local;
   double extent = 0;
   for (std::size_t k = 1; k < ring.size(); ++k) {

@@ -21,7 +21,8 @@
 #include <CGAL/Mesh_repair/internal/stitching/glue_border_pairs.h>
 #include <CGAL/Mesh_repair/internal/stitching/merge_point.h>
 #include <CGAL/Mesh_repair/internal/stitching/point_kd_tree.h>
-#include <CGAL/Mesh_repair/internal/stitching/stitch_result.h>
+#include <CGAL/Mesh_repair/internal/vec3.h>
+#include <CGAL/Mesh_repair/stitch_result.h>
 #include <CGAL/Mesh_repair/visitor.h>
 
 #include <CGAL/Box_intersection_d/Box_with_info_d.h>
@@ -52,17 +53,6 @@ struct Stitch_settings {
   bool use_cubic_curves = true;    ///< T-junction nodes on the boundary curve (4.3.1)
   int max_t_junction_passes = 8;
 };
-
-using Vec3 = std::array<double, 3>;
-inline Vec3 operator-(const Vec3& a, const Vec3& b) {
-  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-inline double dot3(const Vec3& a, const Vec3& b) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-inline double distance3(const Vec3& a, const Vec3& b) {
-  return std::sqrt(dot3(a - b, a - b));
-}
 
 template <class PolygonMesh, class VertexPointMap, class GeomTraits, class Visitor>
 class Gap_stitcher {
@@ -199,7 +189,7 @@ class Gap_stitcher {
           ++result_.rejected_same_face;
           return false;
         }
-        if (distance3(node_original_[x], node_original_[y]) > pair_tolerance(x, y)) {
+        if (norm(node_original_[x] - node_original_[y]) > pair_tolerance(x, y)) {
           ++result_.rejected_too_far;
           return false;
         }
@@ -264,8 +254,7 @@ class Gap_stitcher {
     for (halfedge_descriptor h : halfedges(pm_)) {
       if (!is_border(h, pm_)) continue;
       const vertex_descriptor a = source(h, pm_), b = target(h, pm_);
-      const double local =
-          settings_.default_tolerance_fraction * distance3(position(a), position(b));
+      const double local = settings_.default_tolerance_fraction * norm(position(a) - position(b));
       for (vertex_descriptor v : {a, b}) {
         if (node(v) == no_node) {
           add_node(v, node_normal(v), derived ? infinity : settings_.merge_tolerance);
@@ -307,12 +296,15 @@ class Gap_stitcher {
     std::size_t done = 0;
     // Queries in tree order, so consecutive queries visit the same tree nodes and mesh regions.
     for (const Point_kd_tree::Item& item : tree.items()) {
-      if (!report(done++)) return;
+      if (!report(done++)) {
+        visitor_.end_step("pair border nodes");  // balanced on cancellation too
+        return;
+      }
       const std::size_t i = item.id;
       const double radius = settings_.merge_nodes ? node_tolerance_[i] : 0.0;
       tree.for_each_within(item.point, radius, [&](std::size_t j, double) {
         if (j <= i) return;
-        const double d = distance3(node_original_[i], node_original_[j]);
+        const double d = norm(node_original_[i] - node_original_[j]);
         if (d == 0) coincident_possible_ = true;  // two border nodes at one point
         if (d <= pair_tolerance(i, j))
           candidates.push_back({d, i, j, share_face(node_vertex_[i], node_vertex_[j])});
@@ -359,7 +351,7 @@ class Gap_stitcher {
         for (std::size_t id = r; id != no_member; id = next_member_[id]) {
           put(vpm_, node_vertex_[id], Point(target[0], target[1], target[2]));
           result_.max_displacement =
-              std::max(result_.max_displacement, distance3(node_original_[id], target));
+              std::max(result_.max_displacement, norm(node_original_[id] - target));
         }
         placed_[r] = true;
         placed_on_planes_[r] = used_planes;
@@ -383,8 +375,8 @@ class Gap_stitcher {
   Vector nodal_tangent(const Vec3& before, const Vec3& at, const Vec3& after,
                        const Vector& chord) const {
     const Vec3 in = at - before, out = after - at;
-    const double lin = std::sqrt(dot3(in, in)), lout = std::sqrt(dot3(out, out));
-    if (lin == 0 || lout == 0 || dot3(in, out) < std::cos(CGAL_PI / 6) * lin * lout) return chord;
+    const double lin = std::sqrt(dot(in, in)), lout = std::sqrt(dot(out, out));
+    if (lin == 0 || lout == 0 || dot(in, out) < std::cos(CGAL_PI / 6) * lin * lout) return chord;
     const Vector t(after[0] - before[0], after[1] - before[1], after[2] - before[2]);
     return t / std::sqrt(CGAL::to_double(t.squared_length()));
   }
@@ -399,8 +391,8 @@ class Gap_stitcher {
     if (!settings_.use_cubic_curves || na == no_node || nb == no_node) return on_chord;
     const Vec3& normal_a = node_normal_[na - 1];
     const Vec3& normal_b = node_normal_[nb - 1];
-    if (dot3(normal_a, normal_a) == 0 || dot3(normal_b, normal_b) == 0) return on_chord;
-    const double length = distance3(a, b);
+    if (dot(normal_a, normal_a) == 0 || dot(normal_b, normal_b) == 0) return on_chord;
+    const double length = norm(a - b);
     const Vector chord((b[0] - a[0]) / length, (b[1] - a[1]) / length, (b[2] - a[2]) / length);
     const Vector ta = nodal_tangent(position(source(prev(h, pm_), pm_)), a, b, chord);
     const Vector tb = nodal_tangent(a, b, position(target(next(h, pm_), pm_)), chord);
@@ -443,16 +435,16 @@ class Gap_stitcher {
       if (v == a || v == b) return;
       const Vec3 pa = position(a), pb = position(b), pv = position(v);
       const Vec3 ab = pb - pa;
-      const double length2 = dot3(ab, ab);
+      const double length2 = dot(ab, ab);
       if (length2 == 0) return;
-      const double t = dot3(pv - pa, ab) / length2;
+      const double t = dot(pv - pa, ab) / length2;
       if (!(t > 0 && t < 1)) return;
       const Vec3 projection = {pa[0] + t * ab[0], pa[1] + t * ab[1], pa[2] + t * ab[2]};
       if (projection == pa || projection == pb) return;
       double tolerance = node_tolerance_[id];
       if (result_.tolerance_derived)
         tolerance = std::min(tolerance, settings_.default_tolerance_fraction * std::sqrt(length2));
-      const double d = distance3(pv, projection);
+      const double d = norm(pv - projection);
       if (d > tolerance || d >= best[id].distance) return;
       best[id] = Edge_hit{d, edge_box.info(), t, projection};
     };
@@ -551,7 +543,7 @@ class Gap_stitcher {
                c = position(target(next(h, pm_), pm_));
     const Vec3 u = b - a, w = c - a;
     Vec3 n = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
-    const double length = std::sqrt(dot3(n, n));
+    const double length = std::sqrt(dot(n, n));
     if (length == 0) return {0, 0, 0};
     return {n[0] / length, n[1] / length, n[2] / length};
   }

@@ -15,9 +15,10 @@
 // parallel planes give the midpoint), and when the point lies farther than the merge tolerance
 // from the centroid ("the line is too far away") the centroid is used.
 
+#include <CGAL/Mesh_repair/internal/vec3.h>
+
 #include <Eigen/Dense>
 
-#include <array>
 #include <cmath>
 #include <vector>
 
@@ -30,14 +31,14 @@ constexpr double near_parallel_planes_deg = 15.0;
 
 /// A node to merge: its position and unit tangent-plane normal (zero when unknown).
 struct Merge_node {
-  std::array<double, 3> position;
-  std::array<double, 3> normal;
+  Vec3 position;
+  Vec3 normal;
 };
 
 /// The merge point of `nodes` (see the file comment); `tolerance` bounds its distance to the
 /// centroid. `used_planes` tells whether the tangent-plane rule applied (false: centroid).
-inline std::array<double, 3> merge_point(const std::vector<Merge_node>& nodes, double tolerance,
-                                         bool* used_planes = nullptr) {
+inline Vec3 merge_point(const std::vector<Merge_node>& nodes, double tolerance,
+                        bool* used_planes = nullptr) {
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
   for (const Merge_node& node : nodes)
     centroid += Eigen::Vector3d(node.position[0], node.position[1], node.position[2]);
@@ -51,9 +52,7 @@ inline std::array<double, 3> merge_point(const std::vector<Merge_node>& nodes, d
     right_hand_side += n * n.dot(p - centroid);
   }
   if (used_planes) *used_planes = false;
-  const auto to_array = [](const Eigen::Vector3d& v) {
-    return std::array<double, 3>{v[0], v[1], v[2]};
-  };
+  const auto to_array = [](const Eigen::Vector3d& v) { return Vec3{v[0], v[1], v[2]}; };
   if (nodes.size() < 2) return to_array(centroid);
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
   solver.computeDirect(normal_matrix);

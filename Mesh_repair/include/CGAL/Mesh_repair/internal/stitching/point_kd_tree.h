@@ -11,6 +11,8 @@
 // array, reordered in place by median splits along the widest extent (`std::nth_element`), so a
 // subtree is a contiguous slice: linear memory, O(n log n) construction, no allocation per query.
 
+#include <CGAL/Mesh_repair/internal/vec3.h>
+
 #include <algorithm>
 #include <array>
 #include <cstddef>
@@ -23,7 +25,7 @@ namespace internal {
 
 class Point_kd_tree {
  public:
-  using Point = std::array<double, 3>;
+  using Point = Vec3;
   struct Item {
     Point point;
     std::size_t id;

@@ -47,28 +47,51 @@ double absolute_tolerance(const PolygonMesh& pm, const NamedParameters& np) {
   return relative * std::sqrt(dx * dx + dy * dy + dz * dz);
 }
 
-template <class PolygonMesh, class NamedParameters>
-Stitch_result run_gap_stitcher(PolygonMesh& pm, const Stitch_settings& settings,
-                               const NamedParameters& np) {
-  using CGAL::parameters::get_parameter_reference;
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  using Geom_traits = typename GetGeomTraits<PolygonMesh, NamedParameters>::type;
-  auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                              get_property_map(CGAL::vertex_point, pm));
-  Default_visitor default_visitor;
-  auto&& visitor =
-      choose_parameter(get_parameter_reference(np, CGAL::internal_np::visitor), default_visitor);
-  using Visitor = std::remove_reference_t<decltype(visitor)>;
-  Gap_stitcher<PolygonMesh, decltype(vpm), Geom_traits, Visitor> stitcher(pm, vpm, settings,
-                                                                          visitor);
+/// `stitch_gaps` / `repair_t_junctions` on plain settings (compiled once per mesh type).
+template <class PolygonMesh, class VertexPointMap, class GeomTraits>
+Stitch_result run_gap_stitcher(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits&,
+                               const Stitch_settings& settings, Any_visitor visitor) {
+  Gap_stitcher<PolygonMesh, VertexPointMap, GeomTraits, Any_visitor> stitcher(pm, vpm, settings,
+                                                                              visitor);
   Stitch_result result = stitcher.run();
   result.valid = CGAL::is_valid_polygon_mesh(pm);
   return result;
 }
 
+/// Reads the vertex point map, traits and visitor of `np` and runs the stitcher.
+template <class PolygonMesh, class NamedParameters>
+Stitch_result run_gap_stitcher(PolygonMesh& pm, const Stitch_settings& settings,
+                               const NamedParameters& np) {
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using Geom_traits = typename GetGeomTraits<PolygonMesh, NamedParameters>::type;
+  auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                              get_property_map(CGAL::vertex_point, pm));
+  const Geom_traits traits =
+      choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits));
+  Visitor_parameter<NamedParameters> visitor(np);
+  return run_gap_stitcher(pm, vpm, traits, settings, visitor.get());
+}
+
 }  // namespace internal
 }  // namespace Mesh_repair
 }  // namespace CGAL
+
+// Compiled once in the core library (internal/compiled_core.h).
+#ifdef CGAL_MESH_REPAIR_COMPILED_CORE
+#include <CGAL/Mesh_repair/internal/compiled_core.h>
+namespace CGAL {
+namespace Mesh_repair {
+namespace internal {
+#ifndef CGAL_MESH_REPAIR_INSTANTIATE_STITCH_GAPS
+extern
+#endif
+    template Stitch_result
+    run_gap_stitcher<Core_mesh, Core_vpm, Core_traits>(Core_mesh&, Core_vpm, const Core_traits&,
+                                                       const Stitch_settings&, Any_visitor);
+}  // namespace internal
+}  // namespace Mesh_repair
+}  // namespace CGAL
+#endif
 
 #endif  // CGAL_MESH_REPAIR_INTERNAL_STITCHING_RUN_GAP_STITCHER_H

@@ -1,16 +1,18 @@
 // Copyright (c) 2026 Mesh_repair developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef CGAL_MESH_REPAIR_INTERNAL_AUTOMATIC_REPAIR_REPAIR_RESULT_H
-#define CGAL_MESH_REPAIR_INTERNAL_AUTOMATIC_REPAIR_REPAIR_RESULT_H
+#ifndef CGAL_MESH_REPAIR_REPAIR_RESULT_H
+#define CGAL_MESH_REPAIR_REPAIR_RESULT_H
 
-#include <CGAL/Mesh_repair/fill_holes.h>
-#include <CGAL/Mesh_repair/internal/json.h>
+#include <CGAL/Mesh_repair/hole_filling/fill_result.h>
+#include <CGAL/Mesh_repair/json_writer.h>
 
-#include <chrono>
-#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
+
+/// \file repair_result.h
+/// The result of `automatic_repair`: every step with its counts and time, every hole, and what
+/// is left.
 
 namespace CGAL {
 namespace Mesh_repair {
@@ -53,41 +55,7 @@ struct Repair_result {
   bool complete() const { return valid && remaining.empty() && !cancelled; }
 };
 
-namespace internal {
-
-/// Times a step and records it in a result.
-class Step_timer {
- public:
-  Step_timer(Repair_result& result, const char* name) : result_(result) {
-    step_.name = name;
-    start_ = std::chrono::steady_clock::now();
-  }
-  ~Step_timer() {
-    step_.seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    result_.steps.push_back(std::move(step_));
-  }
-  Repair_step_report& step() { return step_; }
-  void count(const std::string& key, double value) { step_.counts.emplace_back(key, value); }
-  template <class Result>
-  void details(const Result& r) {
-    std::ostringstream out;
-    Json_writer json(out, false);
-    write_json(json, r);
-    step_.details_json = out.str();
-    if (!step_.details_json.empty() && step_.details_json.back() == '\n')
-      step_.details_json.pop_back();
-  }
-
- private:
-  Repair_result& result_;
-  Repair_step_report step_;
-  std::chrono::steady_clock::time_point start_;
-};
-
-}  // namespace internal
-
-inline void write_json(internal::Json_writer& json, const Repair_result& r) {
+inline void write_json(Json_writer& json, const Repair_result& r) {
   json.begin_object();
   json.field("complete", r.complete())
       .field("valid", r.valid)
@@ -129,4 +97,4 @@ inline void write_json(internal::Json_writer& json, const Repair_result& r) {
 }  // namespace Mesh_repair
 }  // namespace CGAL
 
-#endif  // CGAL_MESH_REPAIR_INTERNAL_AUTOMATIC_REPAIR_REPAIR_RESULT_H
+#endif  // CGAL_MESH_REPAIR_REPAIR_RESULT_H

@@ -1,7 +1,7 @@
 // Copyright (c) 2026 Mesh_repair developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef CGAL_MESH_REPAIR_INTERNAL_DETECT_DEFECTS_DEFECT_REPORT_H
-#define CGAL_MESH_REPAIR_INTERNAL_DETECT_DEFECTS_DEFECT_REPORT_H
+#ifndef CGAL_MESH_REPAIR_DEFECT_REPORT_H
+#define CGAL_MESH_REPAIR_DEFECT_REPORT_H
 
 // The result of `detect_defects`: every defect with its location. Indices are those of the
 // mesh's vertex and face index maps (for a Surface_mesh, the descriptors' integer values);
@@ -182,4 +182,4 @@ inline Defect_counts counts(const Defect_report& r) {
 }  // namespace Mesh_repair
 }  // namespace CGAL
 
-#endif  // CGAL_MESH_REPAIR_INTERNAL_DETECT_DEFECTS_DEFECT_REPORT_H
+#endif  // CGAL_MESH_REPAIR_DEFECT_REPORT_H

@@ -1,10 +1,12 @@
 // Copyright (c) 2026 Mesh_repair developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef CGAL_MESH_REPAIR_INTERNAL_JSON_H
-#define CGAL_MESH_REPAIR_INTERNAL_JSON_H
+#ifndef CGAL_MESH_REPAIR_JSON_WRITER_H
+#define CGAL_MESH_REPAIR_JSON_WRITER_H
 
-// A minimal streaming JSON writer for reports (Debian 12's Boost 1.74 has no Boost.JSON, and a
-// report needs only objects, arrays, numbers, booleans and strings).
+/// \file json_writer.h
+/// `Json_writer`: the streaming JSON writer of every report (the `write_json` overloads of the
+/// result types). Debian 12's Boost 1.74 has no Boost.JSON, and a report needs only objects,
+/// arrays, numbers, booleans and strings.
 
 #include <CGAL/number_utils.h>
 
@@ -17,7 +19,6 @@
 
 namespace CGAL {
 namespace Mesh_repair {
-namespace internal {
 
 class Json_writer {
  public:
@@ -158,8 +159,7 @@ class Json_writer {
   std::vector<bool> first_;
 };
 
-}  // namespace internal
 }  // namespace Mesh_repair
 }  // namespace CGAL
 
-#endif  // CGAL_MESH_REPAIR_INTERNAL_JSON_H
+#endif  // CGAL_MESH_REPAIR_JSON_WRITER_H

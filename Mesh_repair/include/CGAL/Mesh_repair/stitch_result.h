@@ -1,9 +1,9 @@
 // Copyright (c) 2026 Mesh_repair developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef CGAL_MESH_REPAIR_INTERNAL_STITCHING_STITCH_RESULT_H
-#define CGAL_MESH_REPAIR_INTERNAL_STITCHING_STITCH_RESULT_H
+#ifndef CGAL_MESH_REPAIR_STITCH_RESULT_H
+#define CGAL_MESH_REPAIR_STITCH_RESULT_H
 
-#include <CGAL/Mesh_repair/internal/json.h>
+#include <CGAL/Mesh_repair/json_writer.h>
 
 #include <cstddef>
 
@@ -34,7 +34,7 @@ struct Stitch_result {
   bool valid = true;                          ///< `is_valid_polygon_mesh` after the call
 };
 
-inline void write_json(internal::Json_writer& json, const Stitch_result& r) {
+inline void write_json(Json_writer& json, const Stitch_result& r) {
   json.begin_object()
       .field("merge_tolerance", r.merge_tolerance)
       .field("tolerance_derived", r.tolerance_derived)
@@ -60,4 +60,4 @@ inline void write_json(internal::Json_writer& json, const Stitch_result& r) {
 }  // namespace Mesh_repair
 }  // namespace CGAL
 
-#endif  // CGAL_MESH_REPAIR_INTERNAL_STITCHING_STITCH_RESULT_H
+#endif  // CGAL_MESH_REPAIR_STITCH_RESULT_H
