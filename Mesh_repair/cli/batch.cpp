@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "batch.h"
 
-#include <CGAL/Mesh_repair/internal/soup_validation.h>
+#include <CGAL/Mesh_repair/file_safety.h>
 
 #include <algorithm>
 #include <chrono>
@@ -63,7 +63,7 @@ std::vector<fs::path> folder_entries(const fs::path& folder) {
 std::string not_run_reason(const fs::path& file, std::string& outcome) {
   std::error_code error;
   const fs::file_status status = fs::status(file, error);
-  const bool mesh_name = !CGAL::Mesh_repair::internal::format_name(file.string()).empty();
+  const bool mesh_name = !CGAL::Mesh_repair::mesh_format(file.string()).empty();
   if (!mesh_name || fs::is_directory(status)) {
     outcome = "skipped";
     return fs::is_directory(status) ? "a folder" : "not a mesh file (.off .obj .stl .ply)";

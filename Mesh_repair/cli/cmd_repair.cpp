@@ -166,7 +166,7 @@ int repair_one(const Arguments& args) {
   const std::string output = args.get("-o");
   if (output.empty()) throw Input_error("missing -o OUT");
   if (output == input) throw Input_error("the output must not overwrite the input");
-  if (CGAL::Mesh_repair::internal::format_name(output).empty())
+  if (CGAL::Mesh_repair::mesh_format(output).empty())
     throw Input_error(output + ": unknown output format (use .off, .obj, .stl or .ply)");
   const auto start = std::chrono::steady_clock::now();
 

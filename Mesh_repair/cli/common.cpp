@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "common.h"
 
+#include <CGAL/Mesh_repair/file_safety.h>
 #include <CGAL/Mesh_repair/io.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 
@@ -69,7 +70,7 @@ long long Arguments::get_int(const std::string& name, long long fallback) const 
 
 std::string Arguments::single_input(const std::string& usage) const {
   if (positional_.size() == 2 && !has("-o") &&
-      !CGAL::Mesh_repair::internal::format_name(positional_[1]).empty())
+      !CGAL::Mesh_repair::mesh_format(positional_[1]).empty())
     throw Input_error("expected one input file; did you mean -o " + positional_[1] +
                       "? usage: " + usage);
   if (positional_.size() != 1) throw Input_error("expected one input file; usage: " + usage);
@@ -126,7 +127,7 @@ std::vector<std::string>& files_read() {
 
 void refuse_to_overwrite_input(const std::string& path) {
   for (const std::string& input : files_read())
-    if (path == input || CGAL::Mesh_repair::internal::same_file(path, input))
+    if (path == input || CGAL::Mesh_repair::same_file(path, input))
       throw Input_error(path + ": is the input file; refusing to overwrite it");
 }
 }  // namespace
@@ -145,24 +146,8 @@ void save_mesh(const std::string& path, const Mesh& mesh, bool binary) {
 
 void save_text(const std::string& path, const std::string& text) {
   refuse_to_overwrite_input(path);
-  const std::string writable = CGAL::Mesh_repair::internal::check_writable(path);
-  if (!writable.empty()) throw Input_error(writable);
-  CGAL::Mesh_repair::internal::remove_stale_temporaries(path);
-  const std::string temporary = CGAL::Mesh_repair::internal::temporary_name_for(path);
-  CGAL::Mesh_repair::internal::register_temporary_file(temporary);
-  {
-    std::ofstream out(temporary);
-    out << text;
-    if (!out) {
-      std::remove(temporary.c_str());
-      CGAL::Mesh_repair::internal::register_temporary_file({});
-      throw Input_error(path + ": cannot be written");
-    }
-  }
-  const bool renamed = std::rename(temporary.c_str(), path.c_str()) == 0;
-  if (!renamed) std::remove(temporary.c_str());
-  CGAL::Mesh_repair::internal::register_temporary_file({});
-  if (!renamed) throw Input_error(path + ": cannot be renamed into place");
+  const std::string error = CGAL::Mesh_repair::write_text_file(path, text);
+  if (!error.empty()) throw Input_error(error);
 }
 
 std::string describe_soup_repair(const CGAL::Mesh_repair::Soup_repair_report& r) {
@@ -214,7 +199,7 @@ volatile std::sig_atomic_t interrupted = 0;
 
 extern "C" void on_signal(int signal_number) {
   interrupted = 1;
-  const char* pending = CGAL::Mesh_repair::internal::pending_temporary_file();
+  const char* pending = CGAL::Mesh_repair::pending_temporary_file();
   if (pending[0] != '\0') ::unlink(pending);
   const char message[] = "\nmesh_repair: interrupted, no output written\n";
   ssize_t ignored = ::write(2, message, sizeof message - 1);

@@ -26,8 +26,8 @@ int main(int argc, char** argv) {
     std::vector<Point> points;
     std::vector<std::vector<std::size_t>> polygons;
     R::Read_counts counts;
-    const std::string error = R::read_soup(in, CGAL::Mesh_repair::internal::format_name(name),
-                                           name, points, polygons, counts);
+    const std::string error = R::read_soup(in, CGAL::Mesh_repair::internal::format_name(name), name,
+                                           points, polygons, counts);
     std::fclose(file);
     std::cout << name << ": " << info.st_size << " bytes, " << points.size() << " points, "
               << polygons.size() << " polygons" << (error.empty() ? "" : "; " + error) << '\n';

@@ -23,7 +23,7 @@
 /// doc/fuzzing.md for the measured figures). Faces with fewer than three vertices are left
 /// out of the soup and counted as degenerate polygons removed.
 
-#include <CGAL/Mesh_repair/internal/file_safety.h>
+#include <CGAL/Mesh_repair/file_safety.h>
 #include <CGAL/Mesh_repair/internal/readers/read_soup.h>
 #include <CGAL/Mesh_repair/json_writer.h>
 #include <CGAL/Mesh_repair/internal/soup_validation.h>

@@ -118,8 +118,7 @@ std::pair<double, double> min_max_angle_deg(const Point& a, const Point& b, cons
 template <class Point>
 double quad_beta(const Point& p0, const Point& p1, const Point& p2, const Point& p3) {
   using namespace internal;
-  const std::array<Vec3, 4> p =
-      scaled<4>({to_array(p0), to_array(p1), to_array(p2), to_array(p3)});
+  const std::array<Vec3, 4> p = scaled<4>({to_array(p0), to_array(p1), to_array(p2), to_array(p3)});
   // Signed sines relative to the quad's mean normal, so a reflex (non-convex) corner counts as bad.
   Vec3 normal{0, 0, 0};
   for (int k = 0; k < 4; ++k) {

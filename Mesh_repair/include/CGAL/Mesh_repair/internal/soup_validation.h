@@ -8,6 +8,8 @@
 // coordinates, indices in range and at least one face. The readers check every header and
 // record themselves; these checks are what holds for every format.
 
+#include <CGAL/number_utils.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
