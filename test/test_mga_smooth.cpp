@@ -297,7 +297,9 @@ TEST(MgaSmooth, SlidingFeatureNodesMoveOnlyAlongTheirCrease) {
     if (std::abs(before.x()) > 1e-12) continue;  // not on the crease
     EXPECT_LT(std::abs(after.x()), 1e-12);
     EXPECT_LT(std::abs(after.z()), 1e-12);
-    if (is_border(v, input)) EXPECT_EQ(before, after);
+    if (is_border(v, input)) {
+      EXPECT_EQ(before, after);
+    }
     if (before != after) ++crease_moves;
   }
   EXPECT_GT(crease_moves, 3);

@@ -310,4 +310,36 @@ std::string write_mesh(const std::string& filename, const PolygonMesh& pm, bool 
 }  // namespace Mesh_repair
 }  // namespace CGAL
 
+// Compiled once in the core library (internal/compiled_core.h): every command, test and benchmark
+// reads and writes Surface_mesh<Epick>, and the readers, CGAL's soup repair and orientation and
+// the face triangulation are the heaviest templates a file that only reads a mesh would compile.
+#ifdef CGAL_MESH_REPAIR_COMPILED_CORE
+#include <CGAL/Mesh_repair/internal/compiled_core.h>
+#ifdef CGAL_MESH_REPAIR_INSTANTIATE_IO
+#define CGAL_MESH_REPAIR_IO_EXTERN
+#else
+#define CGAL_MESH_REPAIR_IO_EXTERN extern
+#endif
+namespace CGAL {
+namespace Mesh_repair {
+CGAL_MESH_REPAIR_IO_EXTERN template struct Polygon_soup<internal::Core_traits::Point_3>;
+CGAL_MESH_REPAIR_IO_EXTERN template std::string read_polygon_soup_from_memory(
+    const char*, std::size_t, const std::string&, const std::string&,
+    Polygon_soup<internal::Core_traits::Point_3>&);
+CGAL_MESH_REPAIR_IO_EXTERN template std::string read_polygon_soup(
+    const std::string&, Polygon_soup<internal::Core_traits::Point_3>&);
+CGAL_MESH_REPAIR_IO_EXTERN template Soup_repair_report repair_polygon_soup(
+    Polygon_soup<internal::Core_traits::Point_3>&);
+CGAL_MESH_REPAIR_IO_EXTERN template std::string soup_to_mesh(
+    const Polygon_soup<internal::Core_traits::Point_3>&, internal::Core_mesh&, bool,
+    Soup_repair_report&);
+CGAL_MESH_REPAIR_IO_EXTERN template std::string read_mesh(const std::string&, internal::Core_mesh&,
+                                                          Soup_repair_report&, const Read_options&);
+CGAL_MESH_REPAIR_IO_EXTERN template std::string write_mesh(const std::string&,
+                                                           const internal::Core_mesh&, bool);
+}  // namespace Mesh_repair
+}  // namespace CGAL
+#undef CGAL_MESH_REPAIR_IO_EXTERN
+#endif
+
 #endif  // CGAL_MESH_REPAIR_IO_H

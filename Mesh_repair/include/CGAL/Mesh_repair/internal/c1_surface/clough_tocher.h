@@ -13,7 +13,9 @@
 
 #include <CGAL/Mesh_repair/internal/c1_surface/local_derivative_estimation.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <set>
 #include <vector>
 

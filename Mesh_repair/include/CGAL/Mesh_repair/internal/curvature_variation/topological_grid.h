@@ -9,19 +9,16 @@
 // surrounding density (CGAL's triangulate_and_refine_hole), as the paper proposes for holes that
 // do not look like a disc.
 
+#include <CGAL/Mesh_repair/internal/core_inline.h>
 #include <CGAL/Mesh_repair/hole_filling/fill_result.h>
 
-#include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
-#include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/iterator.h>
 
 #include <array>
-#include <map>
 #include <cmath>
-#include <queue>
 #include <string>
 #include <vector>
 
@@ -43,74 +40,14 @@ std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor> border
 /// Points of the unit disc: the contour at angles proportional to its arc length (so that the
 /// stretched grid keeps the contour's edge-length ratios), interior points on a hexagonal
 /// lattice whose spacing is the mean boundary chord, kept away from the circle by half a spacing.
-inline std::vector<std::array<double, 2>> disc_grid_points(const std::vector<double>& edge_lengths,
-                                                           std::size_t& border_count) {
-  const std::size_t n = edge_lengths.size();
-  double perimeter = 0;
-  for (double l : edge_lengths) perimeter += l;
-  std::vector<std::array<double, 2>> points;
-  double arc = 0;
-  for (std::size_t k = 0; k < n; ++k) {
-    const double angle = perimeter > 0 ? 2 * CGAL_PI * arc / perimeter : 2 * CGAL_PI * k / n;
-    points.push_back({std::cos(angle), std::sin(angle)});
-    arc += edge_lengths[k];
-  }
-  border_count = n;
-  const double spacing = 2 * std::sin(CGAL_PI / double(n));
-  const double row_height = spacing * std::sqrt(3.0) / 2;
-  const double keep_radius = 1.0 - 0.5 * spacing;
-  const int rows = int(std::ceil(1.0 / row_height));
-  for (int r = -rows; r <= rows; ++r) {
-    const double y = r * row_height;
-    const double shift = (r % 2 == 0) ? 0.0 : 0.5 * spacing;
-    const int columns = int(std::ceil(1.0 / spacing)) + 1;
-    for (int c = -columns; c <= columns; ++c) {
-      const double x = c * spacing + shift;
-      if (x * x + y * y < keep_radius * keep_radius) points.push_back({x, y});
-    }
-  }
-  return points;
-}
+CGAL_MESH_REPAIR_CORE_INLINE std::vector<std::array<double, 2>> disc_grid_points(
+    const std::vector<double>& edge_lengths, std::size_t& border_count);
 
 /// Triangles (indices into the disc points) of the Delaunay triangulation of the disc points,
 /// counter-clockwise, ordered by breadth-first distance from the circle so that adding them to
 /// the mesh one by one always extends a connected patch from the hole's border.
-inline std::vector<std::array<std::size_t, 3>> disc_grid_triangles(
-    const std::vector<std::array<double, 2>>& points) {
-  using K2 = CGAL::Exact_predicates_inexact_constructions_kernel;
-  using Vb = CGAL::Triangulation_vertex_base_with_info_2<std::size_t, K2>;
-  using Tds = CGAL::Triangulation_data_structure_2<Vb>;
-  using Delaunay = CGAL::Delaunay_triangulation_2<K2, Tds>;
-  std::vector<std::pair<K2::Point_2, std::size_t>> input;
-  for (std::size_t i = 0; i < points.size(); ++i)
-    input.emplace_back(K2::Point_2(points[i][0], points[i][1]), i);
-  Delaunay dt(input.begin(), input.end());
-  std::map<Delaunay::Face_handle, std::size_t> order;
-  std::vector<Delaunay::Face_handle> faces;
-  std::queue<Delaunay::Face_handle> queue;
-  for (auto f : dt.finite_face_handles()) {
-    for (int i = 0; i < 3; ++i) {
-      if (dt.is_infinite(f->neighbor(i)) && order.emplace(f, faces.size()).second) {
-        faces.push_back(f);
-        queue.push(f);
-      }
-    }
-  }
-  while (!queue.empty()) {
-    auto f = queue.front();
-    queue.pop();
-    for (int i = 0; i < 3; ++i) {
-      auto g = f->neighbor(i);
-      if (dt.is_infinite(g) || !order.emplace(g, faces.size()).second) continue;
-      faces.push_back(g);
-      queue.push(g);
-    }
-  }
-  std::vector<std::array<std::size_t, 3>> triangles;
-  for (auto f : faces)
-    triangles.push_back({f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()});
-  return triangles;
-}
+CGAL_MESH_REPAIR_CORE_INLINE std::vector<std::array<std::size_t, 3>> disc_grid_triangles(
+    const std::vector<std::array<double, 2>>& points);
 
 /// Removes the faces of a partially added patch, newest first. `CGAL::Euler::remove_face`
 /// removes the vertices it leaves isolated; vertices that no face used are removed here.
@@ -222,5 +159,9 @@ bool fill_with_refined_liepa(PolygonMesh& pm,
 }  // namespace internal
 }  // namespace Mesh_repair
 }  // namespace CGAL
+
+#ifndef CGAL_MESH_REPAIR_COMPILED_CORE
+#include <CGAL/Mesh_repair/internal/curvature_variation/topological_grid_impl.h>
+#endif
 
 #endif  // CGAL_MESH_REPAIR_INTERNAL_CURVATURE_VARIATION_TOPOLOGICAL_GRID_H

@@ -8,16 +8,14 @@
 // would pass each other in their own tangent planes meet on it. New nodes are moved to the
 // closest point of the guide (AABB tree).
 
+#include <CGAL/Mesh_repair/internal/core_inline.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/border_cycles.h>
 
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
-#include <CGAL/utility.h>
 
-#include <iterator>
 #include <vector>
 
 namespace CGAL {
@@ -31,26 +29,12 @@ class Guide_surface {
 
  public:
   /// Triangulates the closed polygon `border` (first point not repeated).
-  explicit Guide_surface(const std::vector<Vec3>& border) {
-    std::vector<Epick::Point_3> polyline;
-    for (const Vec3& p : border) polyline.emplace_back(p[0], p[1], p[2]);
-    std::vector<CGAL::Triple<int, int, int>> triples;
-    CGAL::Polygon_mesh_processing::triangulate_hole_polyline(polyline, std::back_inserter(triples));
-    for (const auto& t : triples) {
-      triangles_.emplace_back(polyline[std::size_t(t.first)], polyline[std::size_t(t.second)],
-                              polyline[std::size_t(t.third)]);
-    }
-    if (triangles_.empty()) return;
-    tree_.insert(triangles_.begin(), triangles_.end());
-    tree_.accelerate_distance_queries();
-  }
+  CGAL_MESH_REPAIR_CORE_INLINE explicit Guide_surface(const std::vector<Vec3>& border);
 
   bool valid() const { return !triangles_.empty(); }
 
-  Vec3 project(const Vec3& p) const {
-    const Epick::Point_3 q = tree_.closest_point(Epick::Point_3(p[0], p[1], p[2]));
-    return {q.x(), q.y(), q.z()};
-  }
+  /// The closest point of the guide to `p`.
+  CGAL_MESH_REPAIR_CORE_INLINE Vec3 project(const Vec3& p) const;
 
  private:
   std::vector<Triangle> triangles_;
@@ -60,5 +44,9 @@ class Guide_surface {
 }  // namespace internal
 }  // namespace Mesh_repair
 }  // namespace CGAL
+
+#ifndef CGAL_MESH_REPAIR_COMPILED_CORE
+#include <CGAL/Mesh_repair/internal/hole_filling/guide_surface_impl.h>
+#endif
 
 #endif  // CGAL_MESH_REPAIR_INTERNAL_HOLE_FILLING_GUIDE_SURFACE_H

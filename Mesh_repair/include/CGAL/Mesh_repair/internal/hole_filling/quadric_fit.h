@@ -10,7 +10,9 @@
 
 #include <CGAL/Mesh_repair/internal/hole_filling/ring_holes.h>
 
-#include <Eigen/Dense>
+#include <CGAL/Mesh_repair/internal/least_squares.h>
+
+#include <Eigen/Core>
 
 #include <vector>
 
@@ -33,10 +35,7 @@ class Quadric_height_field {
       design.row(Eigen::Index(k)) << 1, uv[0], uv[1], uv[0] * uv[0], uv[0] * uv[1], uv[1] * uv[1];
       heights(Eigen::Index(k)) = frame_.height(points[k]) / scale_;
     }
-    const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(design);
-    if (qr.rank() < 6) return;
-    coefficients_ = qr.solve(heights);
-    valid_ = coefficients_.allFinite();
+    valid_ = solve_least_squares(design, heights, 6, coefficients_) && coefficients_.allFinite();
   }
 
   bool valid() const { return valid_; }

@@ -8,13 +8,14 @@
 // across each border edge.
 
 #include <CGAL/Mesh_repair/internal/cubic_curves.h>
+#include <CGAL/Mesh_repair/internal/least_squares.h>
 #include <CGAL/Mesh_repair/internal/shape_prediction/shape_estimate.h>
 #include <CGAL/Mesh_repair/internal/vec3.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
 
 #include <algorithm>
 #include <cmath>
@@ -119,9 +120,8 @@ typename Kernel::Vector_3 fitted_vertex_normal(
         weight * y * y;
     heights(Eigen::Index(k)) = weight * local[k][2] / extent;
   }
-  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(design);
-  if (qr.rank() < 5) return n0;
-  Eigen::VectorXd c = qr.solve(heights);
+  Eigen::VectorXd c;
+  if (!solve_least_squares(design, heights, 5, c)) return n0;
   {
     // Iteratively reweighted least squares with Cauchy weights on the residuals, scaled by
     // their median absolute deviation (1.4826 MAD estimates the standard deviation; 2.385 is
@@ -145,9 +145,7 @@ typename Kernel::Vector_3 fitted_vertex_normal(
         weighted.row(k) *= weight;
         weighted_heights(k) *= weight;
       }
-      const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> reweighted(weighted);
-      if (reweighted.rank() < 5) break;
-      c = reweighted.solve(weighted_heights);
+      if (!solve_least_squares(weighted, weighted_heights, 5, c)) break;
     }
   }
   if (!c.allFinite()) return n0;

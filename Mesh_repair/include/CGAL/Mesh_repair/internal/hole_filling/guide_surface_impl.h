@@ -1,0 +1,40 @@
+// Copyright (c) 2026 Mesh_repair developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_MESH_REPAIR_INTERNAL_HOLE_FILLING_GUIDE_SURFACE_IMPL_H
+#define CGAL_MESH_REPAIR_INTERNAL_HOLE_FILLING_GUIDE_SURFACE_IMPL_H
+
+#include <CGAL/Mesh_repair/internal/hole_filling/guide_surface.h>
+
+#include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
+#include <CGAL/utility.h>
+
+#include <iterator>
+
+namespace CGAL {
+namespace Mesh_repair {
+namespace internal {
+
+CGAL_MESH_REPAIR_CORE_INLINE Guide_surface::Guide_surface(const std::vector<Vec3>& border) {
+  std::vector<Epick::Point_3> polyline;
+  for (const Vec3& p : border) polyline.emplace_back(p[0], p[1], p[2]);
+  std::vector<CGAL::Triple<int, int, int>> triples;
+  CGAL::Polygon_mesh_processing::triangulate_hole_polyline(polyline, std::back_inserter(triples));
+  for (const auto& t : triples) {
+    triangles_.emplace_back(polyline[std::size_t(t.first)], polyline[std::size_t(t.second)],
+                            polyline[std::size_t(t.third)]);
+  }
+  if (triangles_.empty()) return;
+  tree_.insert(triangles_.begin(), triangles_.end());
+  tree_.accelerate_distance_queries();
+}
+
+CGAL_MESH_REPAIR_CORE_INLINE Vec3 Guide_surface::project(const Vec3& p) const {
+  const Epick::Point_3 q = tree_.closest_point(Epick::Point_3(p[0], p[1], p[2]));
+  return {q.x(), q.y(), q.z()};
+}
+
+}  // namespace internal
+}  // namespace Mesh_repair
+}  // namespace CGAL
+
+#endif  // CGAL_MESH_REPAIR_INTERNAL_HOLE_FILLING_GUIDE_SURFACE_IMPL_H
