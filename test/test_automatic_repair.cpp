@@ -314,4 +314,25 @@ TEST(AutomaticRepair, StitchingNeverAddsSelfIntersectionsOnCoarseCad) {
   EXPECT_TRUE(trial);
 }
 
+TEST(AutomaticRepair, TheOutlineOfALargeOpenSheetIsLeftOpenAndCounted) {
+  // 250 x 250 cells, a 1000-edge outline: before the rule, the advancing front worked on it for
+  // minutes.
+  Mesh mesh;
+  MR::make_height_field<Mesh, Point>(mesh, -1, 1, -1, 1, 250, 250, [](double x, double y) {
+    return 0.05 * std::sin(5 * x) * std::sin(4 * y);
+  });
+  const std::size_t faces_before = num_faces(mesh);
+  const MR::Repair_result result = MR::automatic_repair(mesh);
+  EXPECT_EQ(result.sheet_borders_left_open, 1u);
+  EXPECT_EQ(result.holes_too_large, 0u);
+  EXPECT_EQ(result.holes.filled, 0u);
+  EXPECT_EQ(num_faces(mesh), faces_before);
+  EXPECT_EQ(count_border_cycles(mesh), 1u);
+  EXPECT_TRUE(result.valid);
+  bool listed = false;
+  for (const std::string& line : result.remaining)
+    listed |= line.find("open sheet") != std::string::npos;
+  EXPECT_TRUE(listed);
+}
+
 }  // namespace

@@ -15,6 +15,7 @@
 #include "hole_punching.h"
 
 #include <cmath>
+#include <limits>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -498,8 +499,10 @@ TEST(FillHoles, SelfIntersectingPatchIsRolledBackAndTheMeshUnchanged) {
   MR::make_height_field<Mesh, Point>(sheet, 0, 1, 0, 1, 6, 6, [](double, double) { return 0.0; });
   const std::size_t faces_before = sheet.number_of_faces();
   const std::size_t vertices_before = sheet.number_of_vertices();
+  // (sheet_border_ratio would leave it open before any method is tried.)
   const MR::Fill_result result =
-      MR::fill_holes(sheet, MR::parameters::fill_method(MR::Fill_method::liepa));
+      MR::fill_holes(sheet, MR::parameters::fill_method(MR::Fill_method::liepa)
+                                .sheet_border_ratio(std::numeric_limits<double>::infinity()));
   ASSERT_EQ(result.holes.size(), 1u);
   EXPECT_FALSE(result.holes[0].filled);
   EXPECT_NE(result.holes[0].failure.find("self-intersect"), std::string::npos)
@@ -515,7 +518,8 @@ TEST(FillHoles, SelfIntersectingPatchIsRolledBackAndTheMeshUnchanged) {
 TEST(FillHoles, AutomaticRecordsTheFallbackWhenTheFrontFails) {
   Mesh sheet;
   MR::make_height_field<Mesh, Point>(sheet, 0, 1, 0, 1, 6, 6, [](double, double) { return 0.0; });
-  const MR::Fill_result result = MR::fill_holes(sheet);
+  const MR::Fill_result result = MR::fill_holes(
+      sheet, MR::parameters::sheet_border_ratio(std::numeric_limits<double>::infinity()));
   ASSERT_EQ(result.holes.size(), 1u);
   EXPECT_EQ(result.holes[0].requested, MR::Fill_method::automatic);
   // The sheet's outline cannot be filled without covering the sheet: the front, Liepa and the
@@ -529,7 +533,8 @@ TEST(FillHoles, ShapePredictionFallsBackToLiepaThenTheFrontAndTimesEachAttempt) 
   Mesh sheet;
   MR::make_height_field<Mesh, Point>(sheet, 0, 1, 0, 1, 6, 6, [](double, double) { return 0.0; });
   const MR::Fill_result result =
-      MR::fill_holes(sheet, MR::parameters::fill_method(MR::Fill_method::shape_prediction));
+      MR::fill_holes(sheet, MR::parameters::fill_method(MR::Fill_method::shape_prediction)
+                                .sheet_border_ratio(std::numeric_limits<double>::infinity()));
   ASSERT_EQ(result.holes.size(), 1u);
   const auto& fallbacks = result.holes[0].fallbacks;
   // Every method is rejected (see above), in the order of `shape_prediction_sequence`, each
@@ -626,5 +631,80 @@ TEST(FillCli, ThreadsOptionGivesTheSameOutputAndRefusesZero) {
   fs::remove_all(dir);
 }
 #endif
+
+/// A bumpy open sheet over [-1,1]^2, n x n cells: its outline is the only border cycle.
+Mesh bumpy_sheet(int n) {
+  Mesh mesh;
+  MR::make_height_field<Mesh, Point>(mesh, -1, 1, -1, 1, n, n, [](double x, double y) {
+    return 0.1 * std::sin(3 * x) * std::cos(2 * y);
+  });
+  return mesh;
+}
+
+TEST(FillHoles, SheetBorderRatioIsOneForAFlatSheetAndSmallForAHoleInASphere) {
+  Mesh flat;
+  MR::make_height_field<Mesh, Point>(flat, 0, 2, 0, 1, 8, 4, [](double, double) { return 0.0; });
+  const auto flat_groups = MR::internal::hole_groups(flat, flat.points(), true);
+  ASSERT_EQ(flat_groups.size(), 1u);
+  EXPECT_NEAR(MR::internal::sheet_border_ratios(flat, flat.points(), flat_groups)[0], 1.0, 1e-12);
+  // A cap of height 0.155 of the unit sphere cut off by z = 1 - 1.3^2 / 2: the remaining surface
+  // has area 2 pi (1 + 0.155), the cut circle pi (1 - 0.155^2).
+  Mesh bowl = sphere_with_hole(1.3, 5);
+  const auto bowl_groups = MR::internal::hole_groups(bowl, bowl.points(), true);
+  ASSERT_EQ(bowl_groups.size(), 1u);
+  const double z = 1 - 1.3 * 1.3 / 2;
+  EXPECT_NEAR(MR::internal::sheet_border_ratios(bowl, bowl.points(), bowl_groups)[0],
+              (1 - z * z) / (2 * (1 + z)), 0.02);
+}
+
+TEST(FillHoles, TheOutlineOfAnOpenSheetIsLeftOpenAndItsHoleFilled) {
+  Mesh mesh = bumpy_sheet(60);
+  punch_hole(mesh, Point(0.2, -0.1, 0.1 * std::sin(0.6) * std::cos(-0.2)), 0.25);
+  ASSERT_EQ(count_border_cycles(mesh), 2u);
+  const std::size_t faces_before = num_faces(mesh);
+  const MR::Fill_result result = MR::fill_holes(mesh);
+  EXPECT_EQ(result.filled, 1u);
+  EXPECT_EQ(result.skipped, 1u);
+  EXPECT_EQ(result.sheet_borders, 1u);
+  EXPECT_EQ(count_border_cycles(mesh), 1u);
+  std::size_t sheet_reports = 0;
+  for (const MR::Hole_fill_report& hole : result.holes) {
+    if (!hole.sheet_border) continue;
+    ++sheet_reports;
+    EXPECT_EQ(hole.border_edges, 240u);
+    EXPECT_NE(hole.failure.find("open sheet"), std::string::npos) << hole.failure;
+  }
+  EXPECT_EQ(sheet_reports, 1u);
+  EXPECT_GT(num_faces(mesh), faces_before);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  EXPECT_FALSE(PMP::does_self_intersect(mesh));
+}
+
+TEST(FillHoles, InfiniteSheetBorderRatioHandsTheOutlineToTheMethods) {
+  // A shallow cap of the unit sphere (30 degrees): its outline bounds 0.93 of its area. With the
+  // rule off it is a hole like any other and every method is tried on it.
+  Mesh mesh;
+  MR::make_sphere(mesh, Point(0, 0, 0), 1.0, 4);
+  punch_hole(mesh, Point(0, 0, -1), std::sqrt(2.0 * (1 + std::cos(CGAL_PI / 6))));
+  ASSERT_EQ(count_border_cycles(mesh), 1u);
+  Mesh kept = mesh;
+  const MR::Fill_result by_default = MR::fill_holes(kept);
+  EXPECT_EQ(by_default.sheet_borders, 1u);
+  EXPECT_EQ(count_border_cycles(kept), 1u);
+  const MR::Fill_result result = MR::fill_holes(
+      mesh, MR::parameters::sheet_border_ratio(std::numeric_limits<double>::infinity()));
+  EXPECT_EQ(result.sheet_borders, 0u);
+  EXPECT_EQ(result.skipped, 0u);
+  EXPECT_EQ(result.filled + result.failed, 1u);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+}
+
+TEST(FillHoles, AHemisphereSizedHoleIsStillFilled) {
+  Mesh mesh = sphere_with_hole(1.3, 4);
+  const MR::Fill_result result = MR::fill_holes(mesh);
+  EXPECT_EQ(result.sheet_borders, 0u);
+  EXPECT_EQ(result.filled, 1u);
+  EXPECT_TRUE(closed_valid_and_clean(mesh));
+}
 
 }  // namespace

@@ -20,6 +20,7 @@ const char* const fill_help =
     "usage: mesh_repair fill IN -o OUT\n"
     "           [--method advancing_front|liepa|shape_prediction|curvature_variation|auto]\n"
     "           [--continuity 0|1|2] [--max-hole-edges N] [--max-hole-size F] [--seed S]\n"
+    "           [--sheet-border-ratio F | --fill-sheet-borders]\n"
     "           [--no-ring-holes] [--threads N] [--report R.json] [--quiet]\n"
     "           [--objective forces|force_variation] [--nodes free|free_and_contour]\n"
     "           [--grid disc|refined_liepa] [--force-density uniform|inverse_length|cotangent]\n"
@@ -35,6 +36,9 @@ const char* const fill_help =
     "  --continuity C       fairing continuity of liepa: 0, 1 (default) or 2\n"
     "  --max-hole-edges N   leave holes with more border edges open\n"
     "  --max-hole-size F    leave holes wider than F x bounding-box diagonal open\n"
+    "  --sheet-border-ratio F  a border whose flat filling has more than F x the area of its\n"
+    "                       component is an open sheet's outline, left open (default 0.9)\n"
+    "  --fill-sheet-borders fill the outlines of open sheets too\n"
     "  --seed S             random seed of the randomised methods (default 0)\n"
     "  --no-ring-holes      fill every border cycle on its own (no island detection)\n"
     "  --threads N          threads for independent holes (default: all cores); the output\n"
@@ -64,13 +68,14 @@ CGAL::Mesh_repair::Fill_method parse_method(const std::string& name) {
 void print_summary(const CGAL::Mesh_repair::Fill_result& result, bool closed) {
   namespace MR = CGAL::Mesh_repair;
   std::cout << result.holes.size() << " hole(s): " << result.filled << " filled, " << result.failed
-            << " failed, " << result.skipped << " left open by selection\n";
+            << " failed, " << result.skipped << " left open by selection (" << result.sheet_borders
+            << " of them outlines of open sheets)\n";
   for (std::size_t k = 0; k < result.holes.size(); ++k) {
     const MR::Hole_fill_report& hole = result.holes[k];
     std::cout << "  hole " << k << ": " << hole.border_edges << " border edges";
     if (hole.island_cycles > 0) std::cout << ", " << hole.island_cycles << " island(s)";
     if (hole.skipped) {
-      std::cout << ", not selected\n";
+      std::cout << (hole.sheet_border ? ", left open: " + hole.failure : ", not selected") << '\n';
       continue;
     }
     if (hole.filled) {
@@ -119,10 +124,10 @@ Curvature_options parse_curvature_options(const Arguments& arguments) {
 
 int run_fill(const std::vector<std::string>& args) {
   namespace MR = CGAL::Mesh_repair;
-  Arguments arguments(args, {"--quiet", "--no-ring-holes"},
+  Arguments arguments(args, {"--quiet", "--no-ring-holes", "--fill-sheet-borders"},
                       {"-o", "--method", "--continuity", "--max-hole-edges", "--max-hole-size",
                        "--seed", "--threads", "--report", "--objective", "--nodes", "--grid",
-                       "--force-density", "--constraints"});
+                       "--force-density", "--constraints", "--sheet-border-ratio"});
   const std::string input = arguments.single_input(fill_help);
   if (!arguments.has("-o")) throw Input_error("missing -o OUT; usage: " + std::string(fill_help));
   const MR::Fill_method method = parse_method(arguments.get("--method", "auto"));
@@ -134,6 +139,12 @@ int run_fill(const std::vector<std::string>& args) {
   const double max_size = arguments.get_double("--max-hole-size", -1);
   if (arguments.has("--max-hole-size") && !(max_size > 0))
     throw Input_error("--max-hole-size must be positive");
+  const bool fill_sheets = arguments.has("--fill-sheet-borders");
+  if (fill_sheets && arguments.has("--sheet-border-ratio"))
+    throw Input_error("give either --sheet-border-ratio or --fill-sheet-borders");
+  const double sheet_ratio = fill_sheets ? std::numeric_limits<double>::infinity()
+                                         : arguments.get_double("--sheet-border-ratio", 0.9);
+  if (!(sheet_ratio > 0)) throw Input_error("--sheet-border-ratio must be positive");
   const long long seed = arguments.get_int("--seed", 0);
   if (seed < 0) throw Input_error("--seed must be non-negative");
   const long long threads = arguments.get_int("--threads", 0);
@@ -153,6 +164,7 @@ int run_fill(const std::vector<std::string>& args) {
                 .max_hole_edges(max_edges < 0 ? std::numeric_limits<std::size_t>::max()
                                               : std::size_t(max_edges))
                 .max_hole_size(max_size < 0 ? std::numeric_limits<double>::infinity() : max_size)
+                .sheet_border_ratio(sheet_ratio)
                 .random_seed(unsigned(seed))
                 .number_of_threads(int(std::min<long long>(threads, 1024)))
                 .detect_ring_holes(!arguments.has("--no-ring-holes"))

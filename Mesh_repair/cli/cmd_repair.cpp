@@ -38,6 +38,9 @@ const char* const repair_help =
     "  --continuity C           Liepa fairing continuity 0|1|2 (default 1)\n"
     "  --max-hole-size F        leave open holes larger than F x bounding-box diagonal\n"
     "  --max-hole-edges N       leave open holes with more than N border edges\n"
+    "  --sheet-border-ratio F   a border whose flat filling has more than F x the area of its\n"
+    "                           component is an open sheet's outline, left open (default 0.9)\n"
+    "  --fill-sheet-borders     fill the outlines of open sheets too\n"
     "  --keep-components        keep every connected component (default)\n"
     "  --largest-component      keep only the largest component (removed ones are counted)\n"
     "  --no-ring-holes          fill islands and their hole separately\n"
@@ -62,12 +65,25 @@ const std::set<std::string> repair_flags = {"--keep-components",
                                             "--no-ring-holes",
                                             "--no-self-intersections",
                                             "--remove-self-intersections",
+                                            "--fill-sheet-borders",
                                             "--binary",
                                             "--quiet"};
 const std::set<std::string> repair_valued = {
-    "-o",           "--report",        "--tolerance",      "--tolerance-rel", "--fill",
-    "--continuity", "--max-hole-size", "--max-hole-edges", "--threads",       "--seed",
-    "--batch",      "--out-dir",       "--jobs",           "--timeout",       "--summary"};
+    "-o",        "--report",     "--tolerance",     "--tolerance-rel",
+    "--fill",    "--continuity", "--max-hole-size", "--max-hole-edges",
+    "--threads", "--seed",       "--batch",         "--out-dir",
+    "--jobs",    "--timeout",    "--summary",       "--sheet-border-ratio"};
+
+double sheet_border_ratio(const Arguments& args) {
+  if (args.has("--fill-sheet-borders")) {
+    if (args.has("--sheet-border-ratio"))
+      throw Input_error("give either --sheet-border-ratio or --fill-sheet-borders");
+    return std::numeric_limits<double>::infinity();
+  }
+  const double ratio = args.get_double("--sheet-border-ratio", 0.9);
+  if (!(ratio > 0)) throw Input_error("--sheet-border-ratio must be positive");
+  return ratio;
+}
 
 CGAL::Mesh_repair::Fill_method fill_option(const Arguments& args) {
   CGAL::Mesh_repair::Fill_method method = CGAL::Mesh_repair::Fill_method::automatic;
@@ -98,7 +114,8 @@ void print_summary(const std::string& input, const CGAL::Mesh_repair::Soup_repai
     for (const auto& note : step.notes) std::cout << "    note: " << note << '\n';
   }
   std::cout << "holes: " << r.holes.holes.size() << " (" << r.holes.filled << " filled, "
-            << r.holes.failed << " failed, " << r.holes_too_large << " left open as too large)\n";
+            << r.holes.failed << " failed, " << r.holes_too_large << " left open as too large, "
+            << r.sheet_borders_left_open << " left open as outlines of open sheets)\n";
   for (std::size_t i = 0; i < r.holes.holes.size(); ++i) {
     const auto& h = r.holes.holes[i];
     if (h.filled) continue;
@@ -153,6 +170,7 @@ void write_summary(const std::string& path, int status, const CGAL::Mesh_repair:
       << "\nfaces_after=" << r.output_faces << "\nholes=" << r.holes.holes.size()
       << "\nholes_filled=" << r.holes.filled << "\nholes_failed=" << r.holes.failed
       << "\nholes_too_large=" << r.holes_too_large
+      << "\nsheet_borders_left_open=" << r.sheet_borders_left_open
       << "\nborder_cycles_after=" << r.border_cycles_left << "\nclosed=" << r.closed
       << "\nvalid=" << r.valid << "\nmanifold=" << r.manifold
       << "\nself_intersections_before=" << r.self_intersections_input
@@ -196,6 +214,7 @@ int repair_one(const Arguments& args) {
                     args.get_double("--max-hole-size", std::numeric_limits<double>::infinity()))
                 .max_hole_edges(std::size_t(
                     args.get_int("--max-hole-edges", std::numeric_limits<long long>::max())))
+                .sheet_border_ratio(sheet_border_ratio(args))
                 .keep_largest_component(args.has("--largest-component"))
                 .detect_ring_holes(!args.has("--no-ring-holes"))
                 .detect_self_intersections(!args.has("--no-self-intersections"))

@@ -96,6 +96,14 @@ Repair_options repair_options_from(const PolygonMesh& pm, const NamedParameters&
 ///     \cgalParamType{double}
 ///     \cgalParamDefault{no limit}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{sheet_border_ratio}
+///     \cgalParamDescription{border cycles whose vector area exceeds this fraction of the area
+///                           of the component they border are the outlines of open sheets and
+///                           are left open and counted (`sheet_borders_left_open`); see
+///                           `fill_holes`. Infinity fills them}
+///     \cgalParamType{double}
+///     \cgalParamDefault{0.9}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{max_hole_edges}
 ///     \cgalParamDescription{holes with more border edges are left open and reported}
 ///     \cgalParamType{std::size_t}

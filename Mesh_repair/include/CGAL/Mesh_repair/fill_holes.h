@@ -22,6 +22,7 @@
 #include <CGAL/Mesh_repair/hole_filling/shape_prediction.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/border_cycles.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/local_region.h>
+#include <CGAL/Mesh_repair/internal/hole_filling/open_sheets.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/patch_check.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/pinches.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/ring_holes.h>
@@ -578,9 +579,11 @@ Fill_result fill_hole_groups(
   result.holes.resize(groups.size());
   patches.assign(groups.size(), Fill_patch<PolygonMesh>());
   std::vector<std::size_t> selected;
+  const std::vector<double> sheet_ratios = sheet_border_ratios(pm, vpm, groups);
   for (std::size_t k = 0; k < groups.size(); ++k) {
     Hole_description d = filler.describe(groups[k]);
     d.relative_size = diagonal > 0 ? d.diameter / diagonal : 0;
+    d.sheet_ratio = sheet_ratios[k];
     Hole_fill_report& report = result.holes[k];
     report.requested = report.used = method;
     report.border_edges = d.border_edges;
@@ -589,7 +592,12 @@ Fill_result fill_hole_groups(
     const bool selected_by_size = d.border_edges + d.island_edges <= options.max_hole_edges &&
                                   d.relative_size <= options.max_hole_size &&
                                   (!options.hole_filter || options.hole_filter(d));
-    if (apply_selection && !selected_by_size) {
+    if (apply_selection && d.sheet_ratio > options.sheet_border_ratio) {
+      report.skipped = report.sheet_border = true;
+      report.failure = "the outline of an open sheet: its vector area is " +
+                       two_decimals(d.sheet_ratio) + " of its component's area (above " +
+                       "sheet_border_ratio " + two_decimals(options.sheet_border_ratio) + ")";
+    } else if (apply_selection && !selected_by_size) {
       report.skipped = true;
       report.failure = "not selected";
     } else {
@@ -618,6 +626,7 @@ Fill_result fill_hole_groups(
   for (const Hole_fill_report& report : result.holes) {
     if (report.skipped) {
       ++result.skipped;
+      if (report.sheet_border) ++result.sheet_borders;
     } else if (report.filled) {
       ++result.filled;
     } else {
@@ -705,6 +714,14 @@ struct Fill_parameters {
 ///     \cgalParamDescription{holes whose border's bounding-box diagonal exceeds this fraction of
 ///       the mesh's bounding-box diagonal are left open}
 ///     \cgalParamType{double} \cgalParamDefault{no limit}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{sheet_border_ratio}
+///     \cgalParamDescription{a border cycle whose vector area (the area of its flat filling)
+///       exceeds this fraction of the area of the connected component it borders is the outline
+///       of an open sheet (a terrain, a scanned face) rather than a hole, and is left open and
+///       reported (`Hole_fill_report::sheet_border`); a hole of a sphere's half is at 0.5, a flat
+///       sheet's outline at 1. Infinity fills every cycle}
+///     \cgalParamType{double} \cgalParamDefault{0.9}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{hole_filter}
 ///     \cgalParamDescription{predicate `bool(const Hole_description&)`; holes it rejects are

@@ -36,8 +36,9 @@ struct Repair_step_report {
 /// What `automatic_repair` did and what is left.
 struct Repair_result {
   std::vector<Repair_step_report> steps;
-  Fill_result holes;                ///< every hole, filled or not, with its method
-  std::size_t holes_too_large = 0;  ///< left open by `max_hole_size` / `max_hole_edges`
+  Fill_result holes;                        ///< every hole, filled or not, with its method
+  std::size_t holes_too_large = 0;          ///< left open by `max_hole_size` / `max_hole_edges`
+  std::size_t sheet_borders_left_open = 0;  ///< outlines of open sheets (`sheet_border_ratio`)
   std::size_t input_vertices = 0, input_faces = 0;
   std::size_t output_vertices = 0, output_faces = 0;
   std::size_t components_removed = 0;  ///< only with `keep_largest_component`
@@ -72,6 +73,7 @@ inline void write_json(Json_writer& json, const Repair_result& r) {
       .field("holes_filled", r.holes.filled)
       .field("holes_failed", r.holes.failed)
       .field("holes_too_large", r.holes_too_large)
+      .field("sheet_borders_left_open", r.sheet_borders_left_open)
       .field("self_intersections_checked", r.self_intersections_checked)
       .field("self_intersections_input", r.self_intersections_input)
       .field("self_intersections_output", r.self_intersections_output)

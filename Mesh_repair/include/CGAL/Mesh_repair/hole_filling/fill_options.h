@@ -71,7 +71,10 @@ struct Fill_options {
   Fill_method method = Fill_method::automatic;
   std::size_t max_hole_edges = std::numeric_limits<std::size_t>::max();
   double max_hole_size = std::numeric_limits<double>::infinity();  ///< of the bbox diagonal
-  std::function<bool(const Hole_description&)> hole_filter;        ///< empty: every hole
+  /// A border cycle whose vector area exceeds this fraction of the area of the component it
+  /// borders is the outline of an open sheet and is left open (infinity: filled like any hole).
+  double sheet_border_ratio = 0.9;
+  std::function<bool(const Hole_description&)> hole_filter;  ///< empty: every hole
   bool detect_ring_holes = true;
   bool check_self_intersections = true;
   int number_of_threads = 0;  ///< 0: TBB's default
@@ -193,6 +196,8 @@ Fill_options fill_options_from(const NamedParameters& np) {
       choose_parameter(get_parameter(np, internal_np::max_hole_edges_t()), o.max_hole_edges);
   o.max_hole_size =
       choose_parameter(get_parameter(np, internal_np::max_hole_size_t()), o.max_hole_size);
+  o.sheet_border_ratio = choose_parameter(get_parameter(np, internal_np::sheet_border_ratio_t()),
+                                          o.sheet_border_ratio);
   o.hole_filter = hole_filter_from(get_parameter(np, internal_np::hole_filter_t()));
   o.detect_ring_holes =
       choose_parameter(get_parameter(np, internal_np::detect_ring_holes_t()), o.detect_ring_holes);

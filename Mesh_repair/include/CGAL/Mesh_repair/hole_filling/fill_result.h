@@ -70,6 +70,7 @@ struct Hole_fill_report {
   Fill_method used = Fill_method::advancing_front;  ///< the method whose patch was kept
   bool filled = false;
   bool skipped = false;                ///< not selected (size limit or filter); left open
+  bool sheet_border = false;           ///< skipped as the outline of an open sheet
   std::string failure;                 ///< why it was not filled (empty when filled)
   std::vector<std::string> fallbacks;  ///< methods tried and rejected before `used`, with reasons
   std::size_t faces_created = 0;
@@ -90,12 +91,17 @@ struct Hole_description {
   double perimeter = 0;           ///< of the outer border cycle, model units
   double diameter = 0;            ///< bounding-box diagonal of the outer cycle, model units
   double relative_size = 0;       ///< diameter / bounding-box diagonal of the mesh
+  /// Vector area of the outer cycle over the area of the component it borders: near 1 for the
+  /// outline of an open sheet, small for a hole in a closed surface (internal/open_sheets.h).
+  double sheet_ratio = 0;
 };
 
 /// What `fill_holes` did to every hole of a mesh.
 struct Fill_result {
   std::vector<Hole_fill_report> holes;
   std::size_t filled = 0, failed = 0, skipped = 0;
+  std::size_t sheet_borders =
+      0;  ///< of the skipped: outlines of open sheets (`sheet_border_ratio`)
   bool cancelled = false;
   bool all_filled() const { return failed == 0 && !cancelled; }
 };
@@ -110,6 +116,7 @@ inline void write_json(Json_writer& json, const Hole_fill_report& report) {
   json.key("used").value(to_string(report.used));
   json.key("filled").value(report.filled);
   json.key("skipped").value(report.skipped);
+  json.key("sheet_border").value(report.sheet_border);
   json.key("failure").value(report.failure);
   json.key("fallbacks").begin_array();
   for (const std::string& fallback : report.fallbacks) json.value(fallback);
@@ -129,6 +136,7 @@ inline void write_json(Json_writer& json, const Fill_result& result) {
   json.key("filled").value(result.filled);
   json.key("failed").value(result.failed);
   json.key("skipped").value(result.skipped);
+  json.key("sheet_borders").value(result.sheet_borders);
   json.key("cancelled").value(result.cancelled);
   json.key("holes").begin_array();
   for (const Hole_fill_report& report : result.holes) write_json(json, report);

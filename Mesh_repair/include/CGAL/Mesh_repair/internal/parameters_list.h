@@ -22,6 +22,7 @@ MESH_REPAIR_PARAMETER(tolerance_edge_length)  // thesis 4.5: sliver edges shorte
 // hole filling
 MESH_REPAIR_PARAMETER(fill_method)               // Fill_method
 MESH_REPAIR_PARAMETER(max_hole_edges)            // holes with more border edges are left open
+MESH_REPAIR_PARAMETER(sheet_border_ratio)        // outlines of open sheets are left open
 MESH_REPAIR_PARAMETER(max_hole_size)             // fraction of the bounding-box diagonal
 MESH_REPAIR_PARAMETER(detect_ring_holes)         // bool: bridge islands into their hole
 MESH_REPAIR_PARAMETER(hole_filter)               // predicate on a hole description

@@ -321,12 +321,14 @@ void step_fill_holes(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& trai
   const std::size_t faces_before = count_faces(pm), vertices_before = count_vertices(pm);
   std::vector<Fill_patch<PolygonMesh>> patches;
   result.holes = fill_holes_with_options(pm, vpm, traits, options.fill, visitor, patches);
-  result.holes_too_large = result.holes.skipped;
+  result.sheet_borders_left_open = result.holes.sheet_borders;
+  result.holes_too_large = result.holes.skipped - result.holes.sheet_borders;
   if (result.holes.cancelled) result.cancelled = true;
   timer.count("holes", double(result.holes.holes.size()));
   timer.count("filled", double(result.holes.filled));
   timer.count("failed", double(result.holes.failed));
   timer.count("left_open_too_large", double(result.holes_too_large));
+  timer.count("left_open_sheet_borders", double(result.sheet_borders_left_open));
   timer.count("faces_added", double(count_faces(pm)) - double(faces_before));
   timer.count("vertices_added", double(count_vertices(pm)) - double(vertices_before));
 }
@@ -382,7 +384,11 @@ inline void list_remaining(Repair_result& result) {
       std::to_string(result.holes.failed) + " hole(s) could not be filled");
   add(result.holes_too_large > 0,
       std::to_string(result.holes_too_large) + " hole(s) larger than the size limit left open");
-  add(!result.closed && result.holes.failed == 0 && result.holes_too_large == 0,
+  add(result.sheet_borders_left_open > 0,
+      std::to_string(result.sheet_borders_left_open) +
+          " outline(s) of open sheets left open (sheet_border_ratio)");
+  add(!result.closed && result.holes.failed == 0 && result.holes_too_large == 0 &&
+          result.sheet_borders_left_open == 0,
       std::to_string(result.border_cycles_left) + " border cycle(s) remain");
   add(result.self_intersections_in_patches > 0,
       std::to_string(result.self_intersections_in_patches) +
