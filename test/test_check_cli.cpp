@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include "scratch_folder.h"
+
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -20,10 +22,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path scratch(const std::string& name) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("mesh_repair_test_check_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir / name;
+  return mesh_repair_test::scratch_folder("mesh_repair_test_check_") / name;
 }
 
 std::string read_text(const fs::path& path) {

@@ -2,6 +2,8 @@
 // input untouched.
 #include <gtest/gtest.h>
 
+#include "scratch_folder.h"
+
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -21,19 +23,8 @@ struct Cli_run {
 };
 
 fs::path scratch(const std::string& name) {
-  fs::path dir = fs::temp_directory_path() / ("mesh_repair_test_cli_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir / name;
+  return mesh_repair_test::scratch_folder("mesh_repair_test_cli_") / name;
 }
-
-// Removes the scratch folder once every test of this program has run.
-struct Scratch_cleanup : ::testing::Environment {
-  void TearDown() override {
-    std::error_code ignored;
-    fs::remove_all(scratch("x").parent_path(), ignored);
-  }
-};
-const auto* const cleanup = ::testing::AddGlobalTestEnvironment(new Scratch_cleanup);
 
 const fs::path corpus_dir =
     fs::path(MESH_REPAIR_SOURCE_DIR) / "test" / "fuzz" / "corpus-regression";
@@ -137,7 +128,9 @@ TEST(CliRobustness, RegressionCorpusNeverCrashesOrHangs) {
     const std::string before = file_text(file);
     const Cli_run check = run_cli("check " + file.string(), 30);
     EXPECT_TRUE(check.status >= 0 && check.status <= 2) << file << ": " << check.stderr_text;
-    if (check.status == 2) EXPECT_EQ(count_lines(check.stderr_text), 1u) << file;
+    if (check.status == 2) {
+      EXPECT_EQ(count_lines(check.stderr_text), 1u) << file;
+    }
     const fs::path out = scratch("out" + file.extension().string());
     const Cli_run repair =
         run_cli("repair " + file.string() + " -o " + out.string() + " --quiet", 60);

@@ -5,6 +5,8 @@
 #include <CGAL/Surface_mesh.h>
 #include <gtest/gtest.h>
 
+#include "scratch_folder.h"
+
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -17,9 +19,7 @@ namespace MR = CGAL::Mesh_repair;
 namespace fs = std::filesystem;
 
 fs::path scratch(const std::string& name) {
-  fs::path dir = fs::temp_directory_path() / ("mesh_repair_test_io_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir / name;
+  return mesh_repair_test::scratch_folder("mesh_repair_test_io_") / name;
 }
 
 void write_text(const fs::path& path, const std::string& text) {
