@@ -4,13 +4,18 @@
 # build-fuzz/corpus/TARGET (seeded from test/data/readers and test/fuzz/corpus-regression),
 # crashes, timeouts and out-of-memory inputs to build-fuzz/artifacts/TARGET/; copy each finding
 # into test/fuzz/corpus-regression/ once it is fixed. Usage: scripts/fuzz.sh [SECONDS] [TARGET...]
+# FUZZ_SEED=N fixes libFuzzer's seed (CI: the same run every time); exit 1 when a target found
+# something.
 set -eu
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 BUILD="$ROOT/build-fuzz"
 SECONDS_EACH=${1:-60}
 [ $# -gt 0 ] && shift
-TARGETS=${*:-"fuzz_read_off fuzz_read_obj fuzz_read_stl fuzz_read_ply fuzz_check"}
+TARGETS=${*:-"fuzz_read_off fuzz_read_obj fuzz_read_stl fuzz_read_ply fuzz_check fuzz_repair"}
 JOBS=${FUZZ_BUILD_JOBS:-1}
+SEED_OPTION=""
+[ -n "${FUZZ_SEED:-}" ] && SEED_OPTION="-seed=$FUZZ_SEED"
+FOUND=0
 
 cmake -S "$ROOT" -B "$BUILD" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_C_COMPILER=clang-14 -DCMAKE_CXX_COMPILER=clang++-14 -DMESH_REPAIR_FUZZ=ON \
@@ -37,7 +42,7 @@ for target in $TARGETS; do
       *."$ext") cp "$f" "$corpus/" ;;
     esac
     if [ -z "$ext" ]; then
-      # fuzz_check: the first byte chooses the format (0 OFF, 1 OBJ, 2 STL, 3 PLY).
+      # fuzz_check, fuzz_repair: the first byte chooses the format (0 OFF, 1 OBJ, 2 STL, 3 PLY).
       case $f in
         *.off) b='\000' ;; *.obj) b='\001' ;; *.stl) b='\002' ;; *.ply) b='\003' ;; *) continue ;;
       esac
@@ -46,8 +51,9 @@ for target in $TARGETS; do
   done
   echo "== $target: $SECONDS_EACH s"
   "$BUILD/bin/$target" "$corpus" -max_total_time="$SECONDS_EACH" -rss_limit_mb=2048 \
-    -timeout=10 -max_len=65536 -artifact_prefix="$artifacts/" -print_final_stats=1 \
-    2>"$BUILD/$target.log" || echo "$target stopped: see $BUILD/$target.log and $artifacts"
+    -timeout=10 -max_len=65536 -artifact_prefix="$artifacts/" -print_final_stats=1 $SEED_OPTION \
+    2>"$BUILD/$target.log" || { echo "$target stopped: see $BUILD/$target.log and $artifacts"; FOUND=1; }
   grep -E "^#[0-9]+.*(DONE|pulse)|stat::|ERROR|SUMMARY" "$BUILD/$target.log" | tail -8
   echo "corpus: $(ls "$corpus" | wc -l) files; findings: $(ls "$artifacts" | wc -l)"
 done
+exit $FOUND

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Installs the Debian packages Mesh_repair needs, only those that are missing.
-# Usage: scripts/setup.sh [--with-plots] [--with-format] [--with-python]
+# Usage: scripts/setup.sh [--with-plots] [--with-format] [--with-python] [--with-fuzz]
 #   --with-plots   adds python3-matplotlib for the bench plots
 #   --with-format  adds clang-format for scripts/check_format.sh (CI)
 #   --with-python  adds pybind11-dev, python3-numpy and python3-pytest for python/ and its tests
+#   --with-fuzz    adds clang-14 and libclang-rt-14-dev for the libFuzzer targets (scripts/fuzz.sh)
 set -euo pipefail
 
 packages=(cmake g++ make libcgal-dev libopenmesh-dev libeigen3-dev libboost-dev libgmp-dev libmpfr-dev
@@ -13,8 +14,9 @@ for arg in "$@"; do
     --with-plots) packages+=(python3-matplotlib) ;;
     --with-format) packages+=(clang-format) ;;
     --with-python) packages+=(pybind11-dev python3-numpy python3-pytest) ;;
+    --with-fuzz) packages+=(clang-14 libclang-rt-14-dev) ;;
     *)
-      echo "setup: unknown option $arg (use --with-plots, --with-format, --with-python)" >&2
+      echo "setup: unknown option $arg (use --with-plots, --with-format, --with-python, --with-fuzz)" >&2
       exit 2
       ;;
   esac

@@ -3,6 +3,7 @@
 #include <CGAL/Mesh_repair/generators.h>
 #include <CGAL/Mesh_repair/io.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/helpers.h>
 #include <gtest/gtest.h>
 
 #include "scratch_folder.h"
@@ -109,6 +110,21 @@ TEST(SoupRepair, TriangulatesQuadsAndCountsThem) {
   ASSERT_EQ(MR::read_mesh(path.string(), mesh, report), "");
   EXPECT_EQ(report.polygons_triangulated, 1u);
   EXPECT_EQ(num_faces(mesh), 2u);
+}
+
+// A non-planar pentagon on which CGAL 5.5's triangulate_faces returns a corrupt halfedge
+// structure (found by fuzzing; `check` then never finished): the soup's fan triangulation is
+// used instead, and the mesh is valid.
+TEST(SoupRepair, NonPlanarPentagonGivesAValidTriangleMesh) {
+  const fs::path path = scratch("pentagon.obj");
+  write_text(path, "v 0 5 0\nv 2 0 0\nv 3 10 1\nv 1 2 0\nv -0 1 1\nf 1 2 4 5 3\n");
+  Mesh mesh;
+  MR::Soup_repair_report report;
+  ASSERT_EQ(MR::read_mesh(path.string(), mesh, report), "");
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  EXPECT_EQ(report.polygons_triangulated, 1u);
+  EXPECT_EQ(report.triangles_from_polygons, 3u);
+  EXPECT_EQ(num_faces(mesh), 3u);
 }
 
 TEST(ReadErrors, EachBadFileGetsOneLine) {

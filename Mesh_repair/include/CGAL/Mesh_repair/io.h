@@ -29,6 +29,7 @@
 #include <CGAL/Mesh_repair/internal/soup_validation.h>
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/boost/graph/helpers.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
@@ -128,8 +129,9 @@ std::string read_polygon_soup_from_memory(const char* data, std::size_t size,
   std::string error =
       internal::readers::read_soup(in, format, name, soup.points, soup.polygons, counts);
   soup.short_polygons_skipped = counts.short_polygons;
-  if (!error.empty()) return error;
-  return internal::validate_soup(name, soup.points, soup.polygons);
+  if (error.empty()) error = internal::validate_soup(name, soup.points, soup.polygons);
+  if (!error.empty()) soup.points.clear(), soup.polygons.clear();  // nothing half-read
+  return error;
 }
 
 /// Reads `filename` (OFF, OBJ, STL or PLY, by extension) into a polygon soup and validates it.
@@ -155,8 +157,9 @@ std::string read_polygon_soup(const std::string& filename, Polygon_soup<Point>& 
                                        soup.polygons, counts);
   std::fclose(file);
   soup.short_polygons_skipped = counts.short_polygons;
-  if (!error.empty()) return error;
-  return internal::validate_soup(filename, soup.points, soup.polygons);
+  if (error.empty()) error = internal::validate_soup(filename, soup.points, soup.polygons);
+  if (!error.empty()) soup.points.clear(), soup.polygons.clear();  // nothing half-read
+  return error;
 }
 
 namespace internal {
@@ -214,6 +217,47 @@ Soup_repair_report repair_polygon_soup(Polygon_soup<Point>& soup) {
   return report;
 }
 
+/// Adds the changes counted in `more` (a second repair pass) to `report`.
+inline void add_soup_changes(Soup_repair_report& report, const Soup_repair_report& more) {
+  report.points_merged += more.points_merged;
+  report.polygons_simplified += more.polygons_simplified;
+  report.polygons_split += more.polygons_split;
+  report.degenerate_polygons_removed += more.degenerate_polygons_removed;
+  report.duplicated_polygons_removed += more.duplicated_polygons_removed;
+  report.isolated_points_removed += more.isolated_points_removed;
+  report.non_manifold_edges += more.non_manifold_edges;
+  report.non_manifold_vertices += more.non_manifold_vertices;
+  report.vertices_duplicated += more.vertices_duplicated;
+  report.polygons_reversed += more.polygons_reversed;
+  report.orientable = report.orientable && more.orientable;
+}
+
+/// Builds `pm` from `soup` with every polygon of more than three sides split into a fan of
+/// triangles from its first point, the triangle soup repaired again (the fans' diagonals may
+/// meet other faces); the triangulation and the second repair are counted in `report`.
+template <class PolygonMesh, class Point>
+std::string triangulate_soup_to_mesh(const Polygon_soup<Point>& soup, PolygonMesh& pm,
+                                     Soup_repair_report& report) {
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  Polygon_soup<Point> triangles;
+  triangles.points = soup.points;
+  std::size_t polygons = 0;
+  for (const auto& polygon : soup.polygons) {
+    polygons += polygon.size() > 3 ? 1 : 0;
+    for (std::size_t k = 1; k + 1 < polygon.size(); ++k)
+      triangles.polygons.push_back({polygon[0], polygon[k], polygon[k + 1]});
+  }
+  report.polygons_triangulated = polygons;
+  report.triangles_from_polygons = triangles.polygons.size() - (soup.polygons.size() - polygons);
+  add_soup_changes(report, repair_polygon_soup(triangles));
+  clear(pm);
+  if (triangles.polygons.empty()) return "no face is left after triangulating the polygons";
+  if (!PMP::is_polygon_soup_a_polygon_mesh(triangles.polygons))
+    return "the triangulated polygon soup is not a valid polygon mesh even after repair";
+  PMP::polygon_soup_to_polygon_mesh(triangles.points, triangles.polygons, pm);
+  return {};
+}
+
 /// Builds `pm` from a soup that `repair_polygon_soup` made manifold. Faces with more than three
 /// sides are triangulated when `triangulate` is set (counted in `report`).
 template <class PolygonMesh, class Point>
@@ -231,6 +275,10 @@ std::string soup_to_mesh(const Polygon_soup<Point>& soup, PolygonMesh& pm, bool 
       if (!PMP::triangulate_faces(pm)) return "some faces could not be triangulated";
       report.polygons_triangulated = non_triangles;
       report.triangles_from_polygons = num_faces(pm) - before + non_triangles;
+      // CGAL 5.5's triangulate_faces can return a corrupt halfedge structure for a non-planar
+      // polygon whose projection is not simple (found by fuzzing: the next CGAL call on the
+      // mesh never returns). Then the soup's polygons are split into fans and repaired again.
+      if (!CGAL::is_valid_polygon_mesh(pm)) return triangulate_soup_to_mesh(soup, pm, report);
     }
   }
   return {};

@@ -66,7 +66,13 @@ inline std::string precheck_mesh_file(const std::string& filename) {
   return {};
 }
 
-/// After reading: every coordinate finite, every index in range, at least one face.
+/// The largest coordinate magnitude read: cubes of coordinate differences (volumes, the
+/// squared areas of quality measures) must stay finite in double precision. Real files stay
+/// far below (single-precision STL cannot exceed 3.4e38).
+constexpr double max_coordinate_magnitude = 1e100;
+
+/// After reading: every coordinate finite and at most `max_coordinate_magnitude`, every index in
+/// range, at least one face.
 template <class Point>
 std::string validate_soup(const std::string& filename, const std::vector<Point>& points,
                           const std::vector<std::vector<std::size_t>>& polygons) {
@@ -79,6 +85,15 @@ std::string validate_soup(const std::string& filename, const std::vector<Point>&
         !std::isfinite(CGAL::to_double(p.z()))) {
       std::ostringstream out;
       out << filename << ": vertex " << i << " has a non-finite coordinate (NaN or inf)";
+      return out.str();
+    }
+    const double largest =
+        std::max({std::abs(CGAL::to_double(p.x())), std::abs(CGAL::to_double(p.y())),
+                  std::abs(CGAL::to_double(p.z()))});
+    if (largest > max_coordinate_magnitude) {
+      std::ostringstream out;
+      out << filename << ": vertex " << i << " has a coordinate of magnitude " << largest
+          << ", above 1e100: the cubes of its differences (volumes) would overflow";
       return out.str();
     }
   }
