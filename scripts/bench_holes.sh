@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # Regenerates the "Hole filling fidelity" section of doc/benchmarks.md and its plots in
 # doc/images/ with `mesh_repair bench holes` (doc/bench_holes.md).
-# Usage: scripts/bench_holes.sh [--quick | --held-out]
+# Usage: scripts/bench_holes.sh [--quick | --held-out | --self-validation]
 #   MESH_REPAIR=path/to/mesh_repair  (default: build/bin/mesh_repair, built if missing)
 #   BENCH_METHODS=a,b,...            (default: all; --held-out: shape_prediction,liepa_c1,liepa_c2)
 # --quick: sphere and torus only, one seed (a smoke run; doc/ is not touched).
+# --self-validation: the tuning and held-out suites of doc/fill_holes.md ("Self-validated
+#   choice") into bench-out/self-validation-*, with scripts/compare_fills.py; doc/ is not touched.
 # --held-out: holes the methods were not tuned on (eight meshes, seeds 4-6, and jagged borders
 #   with seeds 1-3) into bench-out/held-out-{disc,jagged}; prints the medians over the holes
 #   every method closed and the time growth (doc/shape_prediction.md); doc/ is not touched.
@@ -16,6 +18,31 @@ if [[ ! -x "$tool" ]]; then
 fi
 meshes_dir=$root/.cache/cgal-demo/meshes
 [[ -f "$meshes_dir/elephant.off" ]] || "$root/scripts/fetch_demo_data.sh"
+
+if [[ "${1:-}" == "--self-validation" ]]; then
+  # The two suites of doc/fill_holes.md, "Self-validated choice": the five meshes the methods were
+  # tuned on (seeds 1-3) and eight they never saw (seeds 7-8), per-case ratios by compare_fills.py.
+  methods=${BENCH_METHODS:-liepa_c1,liepa_c2,shape_prediction,curvature_variation,self_validated,auto}
+  for suite in tuning held-out; do
+    if [[ $suite == tuning ]]; then
+      names="elephant bunny00 head femur fandisk"; seeds=1,2,3
+    else
+      names="armadillo dino homer knot1 bear man triceratops blobby"; seeds=7,8
+    fi
+    meshes=()
+    for name in $names; do
+      [[ -f "$meshes_dir/$name.off" ]] && meshes+=(--mesh "$meshes_dir/$name.off")
+    done
+    out=$root/bench-out/self-validation-$suite
+    "$tool" bench holes --holes 3 --radius 0.05,0.12 --seeds "$seeds" --methods "$methods" \
+      --out "$out" --no-plots --quiet "${meshes[@]}"
+    echo "### $suite suite ($names; seeds $seeds)"
+    /usr/bin/env python3 "$root/scripts/compare_fills.py" "$out/results.jsonl"
+    sed -n '/^Medians over the/,/^Holes not closed/p' "$out/table.md" | sed '$d'
+    echo
+  done
+  exit 0
+fi
 
 if [[ "${1:-}" == "--held-out" ]]; then
   methods=${BENCH_METHODS:-shape_prediction,liepa_c1,liepa_c2}

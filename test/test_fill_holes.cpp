@@ -331,8 +331,8 @@ TEST(FillHoles, LiepaClosesASphereHoleWithEveryContinuity) {
 }
 
 TEST(FillHoles, EveryMethodClosesThreeTorusHoles) {
-  for (MR::Fill_method method :
-       {MR::Fill_method::advancing_front, MR::Fill_method::liepa, MR::Fill_method::automatic}) {
+  for (MR::Fill_method method : {MR::Fill_method::advancing_front, MR::Fill_method::liepa,
+                                 MR::Fill_method::automatic, MR::Fill_method::self_validated}) {
     Mesh mesh;
     MR::make_torus<Mesh, Point>(mesh, 2.0, 0.7, 64, 24);
     punch_hole(mesh, Point(2.7, 0, 0), 0.45);    // outer equator
@@ -358,6 +358,50 @@ Mesh sphere_with_ring_hole() {
   }
   for (auto f : band) CGAL::Euler::remove_face(halfedge(f, mesh), mesh);
   return mesh;
+}
+
+/// The note of a self-validated fill starts with what the ranking was measured on.
+bool note_starts_with(const MR::Hole_fill_report& report, const std::string& start) {
+  return !report.notes.empty() && report.notes.front().rfind(start, 0) == 0;
+}
+
+// On a sphere the ring around a hole has the hole's own curvature, so the method it ranks first
+// must be as faithful on the hole as the best of the candidates.
+TEST(FillHoles, SelfValidatedChoiceIsAsFaithfulAsTheBestCandidateOnASphere) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const auto& candidate : MR::internal::self_validation_candidates()) {
+    Mesh mesh = sphere_with_hole(0.35, 5);
+    auto np = MR::parameters::fill_method(candidate.method);
+    const MR::Fill_result result =
+        candidate.continuity < 0
+            ? MR::fill_holes(mesh, np)
+            : MR::fill_holes(mesh, np.fairing_continuity(candidate.continuity));
+    if (result.all_filled() && closed_valid_and_clean(mesh))
+      best = std::min(best, normalised_sphere_einf(mesh));
+  }
+  ASSERT_TRUE(std::isfinite(best));
+  Mesh mesh = sphere_with_hole(0.35, 5);
+  const MR::Fill_result result =
+      MR::fill_holes(mesh, MR::parameters::fill_method(MR::Fill_method::self_validated));
+  ASSERT_EQ(result.holes.size(), 1u);
+  const MR::Hole_fill_report& hole = result.holes[0];
+  ASSERT_TRUE(hole.filled) << hole.failure;
+  EXPECT_EQ(hole.requested, MR::Fill_method::self_validated);
+  EXPECT_TRUE(note_starts_with(hole, "self-validation on the hole enlarged by 2 ring(s)"))
+      << hole.notes.front();
+  EXPECT_TRUE(closed_valid_and_clean(mesh));
+  EXPECT_LE(normalised_sphere_einf(mesh), 1.1 * best) << hole.notes.front();
+}
+
+// A ring hole (whose enlargement would swallow the island) keeps the default order.
+TEST(FillHoles, SelfValidationOfARingHoleKeepsTheDefaultOrder) {
+  Mesh ring = sphere_with_ring_hole();
+  const MR::Fill_result ringed =
+      MR::fill_holes(ring, MR::parameters::fill_method(MR::Fill_method::self_validated));
+  ASSERT_EQ(ringed.holes.size(), 1u);
+  EXPECT_TRUE(ringed.holes[0].filled) << ringed.holes[0].failure;
+  EXPECT_TRUE(note_starts_with(ringed.holes[0], "self-validation: not done on a ring hole"));
+  EXPECT_TRUE(closed_valid_and_clean(ring));
 }
 
 TEST(FillHoles, RingHoleIsClosedWithOnePatchJoiningTheIsland) {
@@ -400,8 +444,8 @@ std::pair<std::vector<Point>, std::vector<std::size_t>> elements(const Mesh& mes
 }
 
 TEST(FillHoles, ParallelFillingGivesTheSameMeshAsOneThread) {
-  for (MR::Fill_method method :
-       {MR::Fill_method::automatic, MR::Fill_method::shape_prediction, MR::Fill_method::liepa}) {
+  for (MR::Fill_method method : {MR::Fill_method::automatic, MR::Fill_method::self_validated,
+                                 MR::Fill_method::shape_prediction, MR::Fill_method::liepa}) {
     const Mesh input = sphere_with_many_holes(method == MR::Fill_method::automatic ? 40 : 12);
     const std::size_t holes = count_border_cycles(input) - 1;  // the island joins its hole
     ASSERT_GE(holes, method == MR::Fill_method::automatic ? 30u : 10u);
@@ -518,13 +562,32 @@ TEST(FillHoles, SelfIntersectingPatchIsRolledBackAndTheMeshUnchanged) {
 TEST(FillHoles, AutomaticRecordsTheFallbackWhenTheFrontFails) {
   Mesh sheet;
   MR::make_height_field<Mesh, Point>(sheet, 0, 1, 0, 1, 6, 6, [](double, double) { return 0.0; });
-  const MR::Fill_result result = MR::fill_holes(
-      sheet, MR::parameters::sheet_border_ratio(std::numeric_limits<double>::infinity()));
+  const MR::Fill_result result =
+      MR::fill_holes(sheet, MR::parameters::fill_method(MR::Fill_method::automatic)
+                                .sheet_border_ratio(std::numeric_limits<double>::infinity()));
   ASSERT_EQ(result.holes.size(), 1u);
   EXPECT_EQ(result.holes[0].requested, MR::Fill_method::automatic);
   // The sheet's outline cannot be filled without covering the sheet: the front, Liepa and the
   // last-resort membrane (Liepa C0) are all rejected and listed.
   EXPECT_EQ(result.holes[0].fallbacks.size(), 3u);
+  EXPECT_FALSE(result.holes[0].filled);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(sheet));
+}
+
+TEST(FillHoles, DefaultIsSelfValidatedAndListsEveryRejectedCandidate) {
+  Mesh sheet;
+  MR::make_height_field<Mesh, Point>(sheet, 0, 1, 0, 1, 6, 6, [](double, double) { return 0.0; });
+  const MR::Fill_result result = MR::fill_holes(
+      sheet, MR::parameters::sheet_border_ratio(std::numeric_limits<double>::infinity()));
+  ASSERT_EQ(result.holes.size(), 1u);
+  EXPECT_EQ(result.holes[0].requested, MR::Fill_method::self_validated);
+  // The four faired candidates in their validated order, the front (handing on, then closing
+  // its remnant), then the membrane.
+  const auto& fallbacks = result.holes[0].fallbacks;
+  ASSERT_EQ(fallbacks.size(), 7u);
+  EXPECT_EQ(fallbacks[4].rfind("advancing_front (0", 0), 0u) << fallbacks[4];
+  EXPECT_EQ(fallbacks[5].rfind("advancing_front (remnant closed) (", 0), 0u) << fallbacks[5];
+  EXPECT_EQ(fallbacks[6].rfind("liepa (C0) (", 0), 0u) << fallbacks[6];
   EXPECT_FALSE(result.holes[0].filled);
   EXPECT_TRUE(CGAL::is_valid_polygon_mesh(sheet));
 }
@@ -661,7 +724,8 @@ TEST(FillHoles, TheOutlineOfAnOpenSheetIsLeftOpenAndItsHoleFilled) {
   Mesh mesh = bumpy_sheet(60);
   punch_hole(mesh, Point(0.2, -0.1, 0.1 * std::sin(0.6) * std::cos(-0.2)), 0.25);
   ASSERT_EQ(count_border_cycles(mesh), 2u);
-  const std::size_t faces_before = num_faces(mesh);
+  // Live faces: num_faces of a Surface_mesh also counts removed ones, whose slots a patch reuses.
+  const std::size_t faces_before = mesh.number_of_faces();
   const MR::Fill_result result = MR::fill_holes(mesh);
   EXPECT_EQ(result.filled, 1u);
   EXPECT_EQ(result.skipped, 1u);
@@ -675,7 +739,7 @@ TEST(FillHoles, TheOutlineOfAnOpenSheetIsLeftOpenAndItsHoleFilled) {
     EXPECT_NE(hole.failure.find("open sheet"), std::string::npos) << hole.failure;
   }
   EXPECT_EQ(sheet_reports, 1u);
-  EXPECT_GT(num_faces(mesh), faces_before);
+  EXPECT_GT(mesh.number_of_faces(), faces_before);
   EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
   EXPECT_FALSE(PMP::does_self_intersect(mesh));
 }

@@ -15,6 +15,7 @@
 #include <CGAL/Polygon_mesh_processing/border.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -25,7 +26,8 @@
 namespace mesh_repair_cli {
 
 const char* const bench_help =
-    "usage: mesh_repair bench holes [--mesh M]... [--analytic sphere|torus|saddle]...\n"
+    "usage: mesh_repair bench holes [--mesh M]... [--meshes DIR]\n"
+    "          [--analytic sphere|torus|saddle]...\n"
     "          --holes K --radius F[,F2,...] --seeds S1[,S2,...] --methods a[,b,...]|all\n"
     "          [--shape disc|jagged|elongated|ring] --out DIR [--no-plots]\n"
     "          [--plot-script plot_bench.py] [--quiet]\n"
@@ -37,7 +39,12 @@ const char* const bench_help =
     "DIR/table.md (median and worst per method) and DIR/*.png (scripts/plot_bench.py).\n"
     "Methods: advancing_front, liepa (CGAL's default continuity 1), liepa_c0, liepa_c1,\n"
     "liepa_c2, shape_prediction, curvature_variation (its defaults: phi_DeltaF over the free and\n"
-    "contour nodes); all = every one of these but liepa.\n"
+    "contour nodes), self_validated (the hole's surroundings choose among the faired methods;\n"
+    "the default of fill and repair), auto (front, then Liepa); all = every one of these but\n"
+    "liepa.\n"
+    "--meshes DIR adds every .off/.obj/.stl/.ply file of DIR (sorted by name): measure on your\n"
+    "own closed meshes. With liepa_c1 among the methods, the table also gives each method's\n"
+    "per-case ratio to it and how many cases it wins.\n"
     "Exit 0 when every case ran (failed fills are results, not errors).\n";
 
 namespace {
@@ -60,7 +67,9 @@ const std::vector<Method>& known_methods() {
       {"liepa_c1", MR::Fill_method::liepa, 1},
       {"liepa_c2", MR::Fill_method::liepa, 2},
       {"shape_prediction", MR::Fill_method::shape_prediction, -1},
-      {"curvature_variation", MR::Fill_method::curvature_variation, -1}};
+      {"curvature_variation", MR::Fill_method::curvature_variation, -1},
+      {"self_validated", MR::Fill_method::self_validated, -1},
+      {"auto", MR::Fill_method::automatic, -1}};
   return methods;
 }
 
@@ -109,13 +118,34 @@ struct Options {
   std::string plot_script;
 };
 
+// The mesh files of `folder` (by extension), sorted by name; one clear line when it is no folder
+// or holds none.
+std::vector<std::string> mesh_files_in(const std::string& folder) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  if (!fs::is_directory(folder, error)) throw Input_error(folder + ": --meshes expects a folder");
+  std::vector<std::string> files;
+  for (const auto& entry : fs::directory_iterator(folder, error)) {
+    std::string ext = entry.path().extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return std::tolower(c); });
+    if (entry.is_regular_file(error) &&
+        (ext == ".off" || ext == ".obj" || ext == ".stl" || ext == ".ply"))
+      files.push_back(entry.path().string());
+  }
+  if (error) throw Input_error(folder + ": cannot be listed (" + error.message() + ")");
+  if (files.empty()) throw Input_error(folder + ": holds no .off, .obj, .stl or .ply file");
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
 Options parse_options(const std::vector<std::string>& args) {
   if (args.empty() || args[0] != "holes")
     throw Input_error("expected 'bench holes' (the only benchmark); see --help");
   const Arguments arguments(std::vector<std::string>(args.begin() + 1, args.end()),
                             {"--no-plots", "--quiet"},
-                            {"--mesh", "--analytic", "--holes", "--radius", "--seeds", "--methods",
-                             "--shape", "--out", "--plot-script"});
+                            {"--mesh", "--meshes", "--analytic", "--holes", "--radius", "--seeds",
+                             "--methods", "--shape", "--out", "--plot-script"});
   if (!arguments.positional().empty())
     throw Input_error("unexpected argument '" + arguments.positional()[0] + "'");
   Options o;
@@ -129,7 +159,10 @@ Options parse_options(const std::vector<std::string>& args) {
   }
   for (const std::string& path : arguments.get_all("--mesh"))
     o.cases.push_back({std::filesystem::path(path).stem().string(), path, false, {}});
-  if (o.cases.empty()) throw Input_error("give at least one --mesh or --analytic");
+  for (const std::string& folder : arguments.get_all("--meshes"))
+    for (const std::string& path : mesh_files_in(folder))
+      o.cases.push_back({std::filesystem::path(path).stem().string(), path, false, {}});
+  if (o.cases.empty()) throw Input_error("give at least one --mesh, --meshes or --analytic");
   const long long holes = arguments.get_int("--holes", 1);
   if (holes < 1) throw Input_error("--holes must be at least 1");
   o.holes = std::size_t(holes);
@@ -458,6 +491,38 @@ void common_holes_table(std::ostream& out, const std::vector<Row>& rows) {
   }
 }
 
+// Each method against CGAL's C1 fairing (`liepa_c1`) case by case, on the holes both closed: the
+// median and quartiles of the Einf ratio, and the cases it wins (strictly smaller error).
+void ratio_to_c1_table(std::ostream& out, const std::vector<Row>& rows) {
+  using Hole_key = std::tuple<std::string, double, unsigned int, std::size_t>;
+  std::map<Hole_key, double> c1;
+  for (const Row& row : rows)
+    if (row.method == "liepa_c1" && row.closed && !row.self_intersecting)
+      c1[Hole_key(row.mesh, row.radius, row.seed, row.hole)] = row.values.at("einf_rel");
+  if (c1.empty()) return;
+  out << "\nEinf against CGAL's C1 fairing (liepa_c1), per case, over the holes both closed "
+         "without self-intersection:\n\n| method | cases | ratio, median | ratio, 25% | "
+         "ratio, 75% | cases won |\n|---|---|---|---|---|---|\n";
+  for (const std::string& method : method_order(rows)) {
+    if (method == "liepa_c1") continue;
+    std::vector<double> ratios;
+    std::size_t won = 0;
+    for (const Row& row : rows) {
+      if (row.method != method || !row.closed || row.self_intersecting) continue;
+      const auto ref = c1.find(Hole_key(row.mesh, row.radius, row.seed, row.hole));
+      const double value = row.values.at("einf_rel");
+      if (ref == c1.end() || !(ref->second > 0) || !std::isfinite(value)) continue;
+      ratios.push_back(value / ref->second);
+      won += value < ref->second;
+    }
+    if (ratios.empty()) continue;
+    std::sort(ratios.begin(), ratios.end());
+    out << "| " << method << " | " << ratios.size() << " | " << format(median(ratios)) << " | "
+        << format(ratios[ratios.size() / 4]) << " | " << format(ratios[(3 * ratios.size()) / 4])
+        << " | " << won << " |\n";
+  }
+}
+
 // Why holes stayed open, per method: each distinct reason with its count.
 void failure_list(std::ostream& out, const std::vector<Row>& rows) {
   std::map<std::pair<std::string, std::string>, std::size_t> reasons;
@@ -484,6 +549,7 @@ std::string table_markdown(const std::vector<Row>& rows, const std::string& comm
   out << "\nMedians on the analytic surfaces and on the meshes read from files:\n\n";
   surface_kind_table(out, rows);
   common_holes_table(out, rows);
+  ratio_to_c1_table(out, rows);
   failure_list(out, rows);
   for (const std::string& w : warnings) out << "\nNote: " << w << '\n';
   return out.str();

@@ -18,7 +18,8 @@ namespace mesh_repair_cli {
 
 const char* const fill_help =
     "usage: mesh_repair fill IN -o OUT\n"
-    "           [--method advancing_front|liepa|shape_prediction|curvature_variation|auto]\n"
+    "           [--method advancing_front|liepa|shape_prediction|curvature_variation|\n"
+    "                     self_validated|auto]\n"
     "           [--continuity 0|1|2] [--max-hole-edges N] [--max-hole-size F] [--seed S]\n"
     "           [--sheet-border-ratio F | --fill-sheet-borders]\n"
     "           [--no-ring-holes] [--threads N] [--report R.json] [--quiet]\n"
@@ -32,7 +33,11 @@ const char* const fill_help =
     "\n"
     "  -o OUT               output mesh (OFF, OBJ, STL, PLY)\n"
     "  --method M           advancing_front (thesis 4.4), liepa (CGAL), shape_prediction,\n"
-    "                       curvature_variation, or auto (default: advancing front, then Liepa)\n"
+    "                       curvature_variation, self_validated (default: the hole's\n"
+    "                       surroundings choose; each faired method fills the hole enlarged\n"
+    "                       by two rings, the one nearest the removed rings goes first;\n"
+    "                       doc/fill_holes.md), or auto (advancing front, then Liepa: faster,\n"
+    "                       less faithful)\n"
     "  --continuity C       fairing continuity of liepa: 0, 1 (default) or 2\n"
     "  --max-hole-edges N   leave holes with more border edges open\n"
     "  --max-hole-size F    leave holes wider than F x bounding-box diagonal open\n"
@@ -130,7 +135,7 @@ int run_fill(const std::vector<std::string>& args) {
                        "--force-density", "--constraints", "--sheet-border-ratio"});
   const std::string input = arguments.single_input(fill_help);
   if (!arguments.has("-o")) throw Input_error("missing -o OUT; usage: " + std::string(fill_help));
-  const MR::Fill_method method = parse_method(arguments.get("--method", "auto"));
+  const MR::Fill_method method = parse_method(arguments.get("--method", "self_validated"));
   const long long continuity = arguments.get_int("--continuity", 1);
   if (continuity < 0 || continuity > 2) throw Input_error("--continuity must be 0, 1 or 2");
   const long long max_edges = arguments.get_int("--max-hole-edges", -1);

@@ -34,7 +34,8 @@ const char* const repair_help =
     "  --report R.json          full JSON report (defects before/after, every step, every hole)\n"
     "  --tolerance auto|X       stitching tolerance, absolute model units (default auto)\n"
     "  --tolerance-rel F        stitching tolerance as a fraction of the bounding-box diagonal\n"
-    "  --fill M                 auto|advancing_front|shape_prediction|curvature_variation|liepa\n"
+    "  --fill M                 auto|advancing_front|shape_prediction|curvature_variation|liepa|\n"
+    "                           self_validated (default; see mesh_repair fill --help)\n"
     "  --continuity C           Liepa fairing continuity 0|1|2 (default 1)\n"
     "  --max-hole-size F        leave open holes larger than F x bounding-box diagonal\n"
     "  --max-hole-edges N       leave open holes with more than N border edges\n"
@@ -86,12 +87,12 @@ double sheet_border_ratio(const Arguments& args) {
 }
 
 CGAL::Mesh_repair::Fill_method fill_option(const Arguments& args) {
-  CGAL::Mesh_repair::Fill_method method = CGAL::Mesh_repair::Fill_method::automatic;
-  const std::string name = args.get("--fill", "auto");
+  CGAL::Mesh_repair::Fill_method method = CGAL::Mesh_repair::Fill_method::self_validated;
+  const std::string name = args.get("--fill", "self_validated");
   if (!CGAL::Mesh_repair::fill_method_from_string(name, method))
     throw Input_error(
         "--fill expects auto, advancing_front, shape_prediction, "
-        "curvature_variation or liepa, got '" +
+        "curvature_variation, liepa or self_validated, got '" +
         name + "'");
   return method;
 }

@@ -81,9 +81,9 @@ Repair_options repair_options_from(const PolygonMesh& pm, const NamedParameters&
 ///   \cgalParamNBegin{geom_traits} \cgalParamDefault{deduced from the point type}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{fill_method}
-///     \cgalParamDescription{the hole-filling method}
+///     \cgalParamDescription{the hole-filling method (see `fill_holes`)}
 ///     \cgalParamType{`Fill_method`}
-///     \cgalParamDefault{`Fill_method::automatic`}
+///     \cgalParamDefault{`Fill_method::self_validated`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{fairing_continuity}
 ///     \cgalParamDescription{continuity of Liepa fairing when that method is used}

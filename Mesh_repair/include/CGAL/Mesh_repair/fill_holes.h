@@ -26,6 +26,7 @@
 #include <CGAL/Mesh_repair/internal/hole_filling/patch_check.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/pinches.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/ring_holes.h>
+#include <CGAL/Mesh_repair/internal/hole_filling/self_validation.h>
 #include <CGAL/Mesh_repair/parameters.h>
 #include <CGAL/Mesh_repair/visitor.h>
 
@@ -154,6 +155,7 @@ Hole_fill_report fill_one_hole(Fill_method method, PolygonMesh& pm, VertexPointM
                                         face_boxes);
     case Fill_method::curvature_variation:
     case Fill_method::automatic:
+    case Fill_method::self_validated:
       break;
   }
   return method_not_available(method);
@@ -169,12 +171,20 @@ Hole_fill_report fill_one_hole(Fill_method method, PolygonMesh& pm, VertexPointM
 /// patches it made were farther from the truth than Liepa's; Liepa takes milliseconds
 /// (doc/shape_prediction.md, "Fallback order"). The front still comes before the last resort.
 /// Both sequences end with Liepa at C0 (see `Hole_filler::fill`).
-inline std::vector<Fill_method> shape_prediction_sequence() {
-  return {Fill_method::shape_prediction, Fill_method::liepa, Fill_method::advancing_front};
+inline std::vector<Fill_candidate> shape_prediction_sequence() {
+  return {{Fill_method::shape_prediction, -1},
+          {Fill_method::liepa, -1},
+          {Fill_method::advancing_front, -1}};
 }
-inline std::vector<Fill_method> automatic_sequence() {
-  return {Fill_method::advancing_front, Fill_method::liepa};
+inline std::vector<Fill_candidate> automatic_sequence() {
+  return {{Fill_method::advancing_front, -1}, {Fill_method::liepa, -1}};
 }
+
+/// Vertex rings removed around a hole to validate the methods on (self_validation.h).
+constexpr int self_validation_rings = 2;
+/// Larger holes are not validated: four fills of the enlarged hole would cost more than the
+/// fill itself by far, and such borders are rarely holes in a smooth surface.
+constexpr std::size_t max_self_validation_edges = 1000;
 
 /// Fills the hole groups of one mesh: bridges, calls the methods, checks and rolls back.
 template <class PolygonMesh, class VertexPointMap, class GeomTraits>
@@ -224,36 +234,35 @@ class Hole_filler {
     if (check_) near_faces_.build();
     const Border_cycle_geometry outer = cycle_geometry(group.outer, pm_, vpm_);
     Hole_fill_report report;
-    if (method != Fill_method::automatic && method != Fill_method::shape_prediction) {
+    if (method != Fill_method::automatic && method != Fill_method::shape_prediction &&
+        method != Fill_method::self_validated) {
       report = attempt(group, method, patch);
     } else {
-      std::vector<std::string> fallbacks;
+      std::vector<std::string> fallbacks, notes;
       // Each rejected attempt is listed with its time: on a hard hole the fill's time is the sum.
       auto rejected = [&fallbacks](const std::string& name, const Hole_fill_report& failed,
                                    Clock::time_point since) {
         fallbacks.push_back(name + " (" + seconds_text(Clock::now() - since) +
                             "): " + failed.failure);
       };
-      for (Fill_method candidate :
-           method == Fill_method::automatic ? automatic_sequence() : shape_prediction_sequence()) {
+      for (const Fill_candidate& candidate : sequence(group, method, notes)) {
         const auto attempt_start = Clock::now();
         // In a sequence, a stuck front hands over to the next method: the remnant closing
         // (a triangulation without interior nodes) is far from the surface on the holes that
         // need it (doc/advancing_front.md), where Liepa's fairing is not.
-        report = candidate == Fill_method::advancing_front
-                     ? attempt(group, candidate, patch, without_remnant_closing())
-                     : attempt(group, candidate, patch);
+        report = candidate.method == Fill_method::advancing_front && !candidate.close_stuck_front
+                     ? attempt(group, candidate.method, patch, without_remnant_closing())
+                     : attempt(group, candidate.method, patch, candidate.options(options_));
         if (report.filled) break;
-        rejected(to_string(candidate), report, attempt_start);
+        rejected(candidate.name(), report, attempt_start);
       }
       if (!report.filled) {
         // Last resort: a membrane (C0) patch lies in the convex hull of its border (maximum
         // principle), so it cannot bulge into a facing patch or a nearby sheet the way the
         // C1/C2 patches can.
         const auto attempt_start = Clock::now();
-        Fill_options membrane = options_;
-        membrane.liepa.fairing_continuity = 0;
-        report = attempt(group, Fill_method::liepa, patch, membrane);
+        report = attempt(group, Fill_method::liepa, patch,
+                         Fill_candidate{Fill_method::liepa, 0}.options(options_));
         if (report.filled)
           report.notes.push_back(
               "filled by Liepa with C0 (membrane) fairing: the faired "
@@ -262,6 +271,7 @@ class Hole_filler {
           rejected("liepa (C0)", report, attempt_start);
       }
       report.fallbacks = fallbacks;
+      report.notes.insert(report.notes.begin(), notes.begin(), notes.end());
     }
     report.requested = method;
     report.border_edges = outer.edges;
@@ -405,6 +415,42 @@ class Hole_filler {
       }
     }
     return h;
+  }
+
+  /// The methods a sequence tries on `group`, in order. `self_validated` ranks the faired
+  /// methods by their error on the hole enlarged by `self_validation_rings` rings (on a copy),
+  /// then the front; ring holes keep the default order (the enlarged hole would merge the
+  /// islands).
+  std::vector<Fill_candidate> sequence(const Group& group, Fill_method method,
+                                       std::vector<std::string>& notes) const {
+    if (method == Fill_method::automatic) return automatic_sequence();
+    if (method == Fill_method::shape_prediction) return shape_prediction_sequence();
+    std::vector<Fill_candidate> ranked = self_validation_candidates();
+    const std::size_t edges = cycle_halfedges(group.outer, pm_).size();
+    if (edges > max_self_validation_edges) {
+      notes.push_back("self-validation: not done on a hole of " + std::to_string(edges) +
+                      " border edges (more than " + std::to_string(max_self_validation_edges) +
+                      "); default order");
+    } else if (group.islands.empty()) {
+      std::string note;
+      const auto fill_one = [this](const Fill_candidate& candidate, auto& mesh, auto border,
+                                   const Fill_options& options, auto& patch) {
+        return fill_one_hole(
+            candidate.method, mesh, get(CGAL::vertex_point, mesh), traits_, border, patch, options,
+            static_cast<Face_box_cache<std::decay_t<decltype(mesh)>,
+                                       decltype(get(CGAL::vertex_point, mesh))>*>(nullptr));
+      };
+      ranked = rank_fill_candidates(pm_, vpm_, traits_, group.outer, options_,
+                                    self_validation_rings, fill_one, note);
+      notes.push_back(note);
+    } else {
+      notes.push_back("self-validation: not done on a ring hole; default order");
+    }
+    // The front last, first handing a stuck front on, then closing its remnant: near other
+    // sheets (close components) the faired patches bulge into them where the front does not.
+    ranked.push_back({Fill_method::advancing_front, -1});
+    ranked.push_back({Fill_method::advancing_front, -1, true});
+    return ranked;
   }
 
   /// In a sequence, a stuck front hands over to the next method instead of closing its remnant.
@@ -702,9 +748,11 @@ struct Fill_parameters {
 /// \param np named parameters:
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{fill_method}
-///     \cgalParamDescription{the method (`Fill_method`); `automatic` tries advancing front,
-///       then CGAL's Liepa, per hole, and records the fallbacks}
-///     \cgalParamDefault{`Fill_method::automatic`}
+///     \cgalParamDescription{the method (`Fill_method`); `self_validated` ranks the faired
+///       methods per hole by how well each predicts the known rings around it (see
+///       doc/fill_holes.md, "Self-validated choice"); `automatic` tries advancing front, then
+///       CGAL's Liepa (faster, less faithful); both record the fallbacks}
+///     \cgalParamDefault{`Fill_method::self_validated`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{max_hole_edges}
 ///     \cgalParamDescription{holes with more border edges (islands included) are left open}

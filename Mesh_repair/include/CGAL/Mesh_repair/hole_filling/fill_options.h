@@ -68,7 +68,7 @@ struct Curvature_variation_fill_options {
 /// Options of `fill_holes` and `fill_hole`: the selection of holes, the method and the options
 /// of every method.
 struct Fill_options {
-  Fill_method method = Fill_method::automatic;
+  Fill_method method = Fill_method::self_validated;
   std::size_t max_hole_edges = std::numeric_limits<std::size_t>::max();
   double max_hole_size = std::numeric_limits<double>::infinity();  ///< of the bbox diagonal
   /// A border cycle whose vector area exceeds this fraction of the area of the component it

@@ -18,8 +18,16 @@
 namespace CGAL {
 namespace Mesh_repair {
 
-/// The hole-filling methods. `automatic` lets the caller choose per hole (see fill_holes.h).
-enum class Fill_method { advancing_front, liepa, shape_prediction, curvature_variation, automatic };
+/// The hole-filling methods. `automatic` and `self_validated` choose per hole (fill_holes.h):
+/// `self_validated` lets the hole's known surroundings choose among the faired methods.
+enum class Fill_method {
+  advancing_front,
+  liepa,
+  shape_prediction,
+  curvature_variation,
+  automatic,
+  self_validated
+};
 
 inline const char* to_string(Fill_method method) {
   switch (method) {
@@ -33,6 +41,8 @@ inline const char* to_string(Fill_method method) {
       return "curvature_variation";
     case Fill_method::automatic:
       return "auto";
+    case Fill_method::self_validated:
+      return "self_validated";
   }
   return "unknown";
 }
@@ -41,7 +51,7 @@ inline const char* to_string(Fill_method method) {
 inline bool fill_method_from_string(const std::string& name, Fill_method& method) {
   for (Fill_method m :
        {Fill_method::advancing_front, Fill_method::liepa, Fill_method::shape_prediction,
-        Fill_method::curvature_variation, Fill_method::automatic}) {
+        Fill_method::curvature_variation, Fill_method::automatic, Fill_method::self_validated}) {
     if (name == to_string(m)) {
       method = m;
       return true;

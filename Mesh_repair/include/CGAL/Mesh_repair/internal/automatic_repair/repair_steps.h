@@ -89,13 +89,6 @@ class Step_timer {
 };
 
 template <class PolygonMesh>
-std::size_t count_border_halfedges(const PolygonMesh& pm) {
-  std::size_t n = 0;
-  for (auto h : halfedges(pm)) n += is_border(h, pm) ? 1 : 0;
-  return n;
-}
-
-template <class PolygonMesh>
 std::size_t count_self_intersections(const PolygonMesh& pm) {
   using face_descriptor = typename boost::graph_traits<PolygonMesh>::face_descriptor;
   std::vector<std::pair<face_descriptor, face_descriptor>> pairs;

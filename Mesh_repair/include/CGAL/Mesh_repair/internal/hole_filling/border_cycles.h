@@ -43,6 +43,14 @@ std::vector<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor> cycl
   return cycle;
 }
 
+/// The border halfedges of the whole mesh (the border edges).
+template <class PolygonMesh>
+std::size_t count_border_halfedges(const PolygonMesh& pm) {
+  std::size_t n = 0;
+  for (auto h : halfedges(pm)) n += is_border(h, pm) ? 1 : 0;
+  return n;
+}
+
 /// Geometry of a border cycle: what selection predicates and reports need.
 struct Border_cycle_geometry {
   std::size_t edges = 0;

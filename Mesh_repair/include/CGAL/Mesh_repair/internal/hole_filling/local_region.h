@@ -95,7 +95,7 @@ bool map_cycles(
   return true;
 }
 
-/// Copies into `region` the faces around the vertices within `local_region_ring_depth` rings
+/// Copies into `region` the faces around the vertices within `depth` rings
 /// of the cycles of `group`, connected as in `pm`, and, as loose triangles, the other faces of
 /// `cache` (every face of the mesh, earlier patches included) whose box meets the box of the
 /// cycles grown by half its diagonal: the obstacles the advancing front and the exact checks
@@ -105,7 +105,7 @@ void copy_local_region(
     const PolygonMesh& pm, VertexPointMap vpm,
     const Hole_group<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor>& group,
     const Face_box_cache<PolygonMesh, VertexPointMap>* cache,
-    Local_region<PolygonMesh, Point>& region) {
+    Local_region<PolygonMesh, Point>& region, int depth = local_region_ring_depth) {
   using GT = boost::graph_traits<PolygonMesh>;
   using face_descriptor = typename GT::face_descriptor;
   using vertex_descriptor = typename GT::vertex_descriptor;
@@ -115,7 +115,7 @@ void copy_local_region(
 
   std::unordered_set<face_descriptor> copied;
   std::vector<face_descriptor> ring_faces;
-  for (vertex_descriptor v : vertices_near_cycles(pm, cycles, local_region_ring_depth))
+  for (vertex_descriptor v : vertices_near_cycles(pm, cycles, depth))
     for (face_descriptor f : faces_around_target(halfedge(v, pm), pm))
       if (f != GT::null_face() && copied.insert(f).second) ring_faces.push_back(f);
 
