@@ -12,6 +12,10 @@ namespace {
 
 using Mesh = CGAL::Polyhedron_3<face_graph_test::Kernel>;
 
+// CGAL's experimental::remove_self_intersections compiles on Polyhedron_3: automatic_repair runs
+// it when asked (mesh_type_traits.h).
+static_assert(CGAL::Mesh_repair::Supports_self_intersection_removal<Mesh>::value);
+
 TEST(FaceGraphs, PolyhedronGivesTheResultsOfSurfaceMesh) {
   face_graph_test::expect_results_of_surface_mesh<Mesh>();
 }

@@ -13,6 +13,10 @@ namespace {
 
 using Mesh = CGAL::Polyhedron_3<face_graph_test::Kernel, CGAL::Polyhedron_items_with_id_3>;
 
+// CGAL's experimental::remove_self_intersections compiles on Polyhedron_3: automatic_repair runs
+// it when asked (mesh_type_traits.h).
+static_assert(CGAL::Mesh_repair::Supports_self_intersection_removal<Mesh>::value);
+
 TEST(FaceGraphs, PolyhedronWithIdsGivesTheResultsOfSurfaceMesh) {
   face_graph_test::expect_results_of_surface_mesh<Mesh>();
 }

@@ -7,20 +7,28 @@
 #include <CGAL/boost/graph/graph_traits_TriMesh_ArrayKernelT.h>
 
 #include "face_graph_operators.h"
+#include "openmesh_point_map.h"
 
 #include <gtest/gtest.h>
 
-namespace {
+using Mesh = OpenMesh::TriMesh_ArrayKernelT<face_graph_test::Double_traits>;
 
-// Double coordinates, as CGAL's OpenMesh examples use (the default traits store floats).
-struct Double_traits : public OpenMesh::DefaultTraits {
-  typedef OpenMesh::Vec3d Point;
-  typedef OpenMesh::Vec3d Normal;
+// The operators are given exact points on OpenMesh (CGAL's own map writes floats,
+// openmesh_point_map.h); with it every result is the one of Surface_mesh.
+template <>
+struct face_graph_test::Exact_point_map<Mesh> {
+  static constexpr bool specialised = true;
+  using type = face_graph_test::Exact_openmesh_point_map<Mesh>;
 };
-using Mesh = OpenMesh::TriMesh_ArrayKernelT<Double_traits>;
+
+namespace {
 
 TEST(FaceGraphs, OpenMeshTriMeshGivesTheResultsOfSurfaceMesh) {
   face_graph_test::expect_results_of_surface_mesh<Mesh>();
+}
+
+TEST(FaceGraphs, OpenMeshTriMeshReportsSelfIntersectionRemovalUnavailable) {
+  face_graph_test::expect_self_intersection_removal_reported_unavailable<Mesh>();
 }
 
 }  // namespace
