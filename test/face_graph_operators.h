@@ -57,7 +57,7 @@ struct Outcome {
 /// the mesh's own). A unit specialises it when the mesh's own map is not exact: CGAL 5.5.1's
 /// OpenMesh map writes points as floats (properties_OpenMesh.h, `put` casts to `float`, even for
 /// `OpenMesh::Vec3d` points), so every point an operator moves or creates would differ from
-/// Surface_mesh's in its last bits (test_face_graphs_polymesh.cpp).
+/// Surface_mesh's in its last bits (test_face_graphs_openmesh.cpp).
 template <class Mesh>
 struct Exact_point_map {
   static constexpr bool specialised = false;

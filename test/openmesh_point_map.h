@@ -1,6 +1,6 @@
 // Copyright (c) 2026 Mesh_repair developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The OpenMesh meshes of the FaceGraph tests (test_face_graphs_polymesh.cpp, _trimesh.cpp): double
+// The OpenMesh meshes of the FaceGraph tests (test_face_graphs_openmesh.cpp): double
 // coordinates, and a vertex point map that writes them exactly.
 #ifndef MESH_REPAIR_TEST_OPENMESH_POINT_MAP_H
 #define MESH_REPAIR_TEST_OPENMESH_POINT_MAP_H
