@@ -1,8 +1,10 @@
 // Copyright (c) 2026 Mesh_repair developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Every public operator on Polyhedron gives the results it gives on Surface_mesh (one translation
-// unit per mesh type: each instantiates every operator once more).
+// Every public operator on Polyhedron_3, with and without Polyhedron_items_with_id_3, gives the
+// results it gives on Surface_mesh. Both in one translation unit: they share its parsing and its
+// Surface_mesh instantiations (test/CMakeLists.txt has the figures).
 #include <CGAL/Polyhedron_3.h>
+#include <CGAL/Polyhedron_items_with_id_3.h>
 
 #include "face_graph_operators.h"
 
@@ -10,10 +12,21 @@
 
 namespace {
 
-using Mesh = CGAL::Polyhedron_3<face_graph_test::Kernel>;
+using Polyhedron = CGAL::Polyhedron_3<face_graph_test::Kernel>;
+using Polyhedron_with_ids =
+    CGAL::Polyhedron_3<face_graph_test::Kernel, CGAL::Polyhedron_items_with_id_3>;
+
+// CGAL's experimental::remove_self_intersections compiles on Polyhedron_3: automatic_repair runs
+// it when asked (mesh_type_traits.h).
+static_assert(CGAL::Mesh_repair::Supports_self_intersection_removal<Polyhedron>::value);
+static_assert(CGAL::Mesh_repair::Supports_self_intersection_removal<Polyhedron_with_ids>::value);
 
 TEST(FaceGraphs, PolyhedronGivesTheResultsOfSurfaceMesh) {
-  face_graph_test::expect_results_of_surface_mesh<Mesh>();
+  face_graph_test::expect_results_of_surface_mesh<Polyhedron>();
+}
+
+TEST(FaceGraphs, PolyhedronWithIdsGivesTheResultsOfSurfaceMesh) {
+  face_graph_test::expect_results_of_surface_mesh<Polyhedron_with_ids>();
 }
 
 }  // namespace

@@ -50,6 +50,9 @@ struct Repair_result {
   bool valid = false, closed = false, manifold = false;
   bool self_intersections_checked = false;
   bool cancelled = false;
+  /// Requested steps that the mesh type does not support (e.g. "self-intersection removal" on
+  /// OpenMesh, see `Supports_self_intersection_removal`); each is also a line of `remaining`.
+  std::vector<std::string> unavailable_steps;
   std::vector<std::string> remaining;  ///< what is left, one line each; empty when complete
 
   /// True when the mesh is valid and every requested repair was done.
@@ -78,6 +81,7 @@ inline void write_json(Json_writer& json, const Repair_result& r) {
       .field("self_intersections_input", r.self_intersections_input)
       .field("self_intersections_output", r.self_intersections_output)
       .field("self_intersections_in_patches", r.self_intersections_in_patches)
+      .array("unavailable_steps", r.unavailable_steps)
       .array("remaining", r.remaining);
   json.key("steps").begin_array();
   for (const auto& s : r.steps) {

@@ -9,6 +9,7 @@
 #include <CGAL/Mesh_repair/internal/hole_filling/border_cycles.h>
 #include <CGAL/Mesh_repair/internal/mesh_counts.h>
 #include <CGAL/Mesh_repair/internal/stitching/run_gap_stitcher.h>
+#include <CGAL/Mesh_repair/mesh_type_traits.h>
 #include <CGAL/Mesh_repair/repair_result.h>
 #include <CGAL/Mesh_repair/visitor.h>
 
@@ -331,11 +332,23 @@ void step_remove_self_intersections(PolygonMesh& pm, VertexPointMap vpm, Repair_
                                     Any_visitor visitor) {
   Step_timer timer(result, "self-intersection removal", visitor);
   const std::size_t faces_before = count_faces(pm);
-  const bool solved = CGAL::Polygon_mesh_processing::experimental::remove_self_intersections(
-      pm, CGAL::parameters::vertex_point_map(vpm).preserve_genus(true));
   timer.count("faces_before", double(faces_before));
-  timer.count("faces_after", double(count_faces(pm)));
-  if (!solved) timer.step().notes.push_back("CGAL could not remove every self-intersection");
+  // Instantiated only where CGAL's function compiles (mesh_type_traits.h); elsewhere the step
+  // is reported as not available, and the repair as incomplete (list_remaining).
+  if constexpr (Supports_self_intersection_removal<PolygonMesh>::value) {
+    const bool solved = CGAL::Polygon_mesh_processing::experimental::remove_self_intersections(
+        pm, CGAL::parameters::vertex_point_map(vpm).preserve_genus(true));
+    timer.count("faces_after", double(count_faces(pm)));
+    if (!solved) timer.step().notes.push_back("CGAL could not remove every self-intersection");
+  } else {
+    (void)vpm;
+    timer.count("not_available", 1);
+    timer.count("faces_after", double(faces_before));
+    timer.step().notes.push_back(
+        "not available for this mesh type: CGAL's experimental::remove_self_intersections does "
+        "not compile for it (Supports_self_intersection_removal)");
+    result.unavailable_steps.push_back("self-intersection removal");
+  }
 }
 
 /// Faces of all filled patches and their one-ring are not known here (regions were copied
@@ -390,6 +403,8 @@ inline void list_remaining(Repair_result& result) {
           result.self_intersections_in_patches == 0,
       std::to_string(result.self_intersections_output) +
           " self-intersecting face pair(s) (already in the input)");
+  for (const std::string& step : result.unavailable_steps)
+    result.remaining.push_back(step + " is not available for this mesh type");
   add(result.cancelled, "cancelled before the end");
 }
 

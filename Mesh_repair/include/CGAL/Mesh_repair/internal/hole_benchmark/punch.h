@@ -264,7 +264,7 @@ class Hole_puncher {
         vpm_(vpm),
         shape_(shape),
         radius_(radius),
-        forbidden_(get(CGAL::dynamic_vertex_property_t<bool>(), pm)),
+        forbidden_(get(CGAL::dynamic_vertex_property_t<char>(), pm)),
         rho_(get(CGAL::dynamic_vertex_property_t<double>(), pm)) {
     // Holes never touch the mesh's own borders.
     for (vertex_descriptor v : vertices(pm_))
@@ -396,7 +396,9 @@ class Hole_puncher {
   VertexPointMap vpm_;
   Hole_shape shape_;
   double radius_;
-  typename boost::property_map<PolygonMesh, CGAL::dynamic_vertex_property_t<bool>>::type forbidden_;
+  // char, not bool: OpenMesh stores a bool property in a std::vector<bool>, whose
+  // elements its property map cannot return by reference (does not compile).
+  typename boost::property_map<PolygonMesh, CGAL::dynamic_vertex_property_t<char>>::type forbidden_;
   typename boost::property_map<PolygonMesh, CGAL::dynamic_vertex_property_t<double>>::type rho_;
 };
 

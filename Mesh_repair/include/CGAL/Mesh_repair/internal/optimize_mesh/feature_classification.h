@@ -56,7 +56,7 @@ class Feature_classification {
         vpm_(vpm),
         gt_(gt),
         cosine_(std::cos(feature_angle_deg * CGAL_PI / 180.0)),
-        feature_(get(CGAL::dynamic_edge_property_t<bool>(), pm)),
+        feature_(get(CGAL::dynamic_edge_property_t<char>(), pm)),
         type_(get(CGAL::dynamic_vertex_property_t<Node_type>(), pm)) {}
 
   /// Classifies every edge and node. `node_order` lists every node: those visited first join
@@ -153,7 +153,9 @@ class Feature_classification {
   VertexPointMap vpm_;
   const GeomTraits& gt_;
   double cosine_;
-  typename boost::property_map<PolygonMesh, CGAL::dynamic_edge_property_t<bool>>::type feature_;
+  // char, not bool: OpenMesh stores a bool property in a std::vector<bool>, whose
+  // elements its property map cannot return by reference (does not compile).
+  typename boost::property_map<PolygonMesh, CGAL::dynamic_edge_property_t<char>>::type feature_;
   typename boost::property_map<PolygonMesh, CGAL::dynamic_vertex_property_t<Node_type>>::type type_;
 };
 

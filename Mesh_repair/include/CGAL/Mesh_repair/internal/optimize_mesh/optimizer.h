@@ -382,13 +382,21 @@ class Optimizer {
         for (halfedge_descriptor g : {h.first, opposite(h.first, pm_)})
           if (!is_border(g, pm_) && target(next(g, pm_), pm_) == t[2]) f = face(g, pm_);
       }
-      if (f != GT::null_face()) get(*carried_, f).clear();
       new_faces.push_back(f);
     }
-    for (std::size_t i = 0; i < assignment_.size(); ++i) {
-      const face_descriptor f = new_faces[assignment_[i]];
-      if (f != GT::null_face()) get(*carried_, f).push_back(patch_points_[i]);
-    }
+    // Gathered per face, then put once: a dynamic property map may only give a const reference
+    // (Polyhedron_3 keeps dynamic properties in an unordered_map). A face met twice shares the
+    // slot of its first triangle.
+    std::vector<std::size_t> slot(new_faces.size());
+    for (std::size_t j = 0; j < new_faces.size(); ++j)
+      slot[j] = std::size_t(std::find(new_faces.begin(), new_faces.end(), new_faces[j]) -
+                            new_faces.begin());
+    std::vector<std::vector<Point>> points(new_faces.size());
+    for (std::size_t i = 0; i < assignment_.size(); ++i)
+      points[slot[assignment_[i]]].push_back(patch_points_[i]);
+    for (std::size_t j = 0; j < new_faces.size(); ++j)
+      if (slot[j] == j && new_faces[j] != GT::null_face())
+        put(*carried_, new_faces[j], std::move(points[j]));
   }
 
   bool needs_quality(face_descriptor f, const std::vector<face_descriptor>& neighbours) const {
@@ -472,7 +480,9 @@ class Optimizer {
       for (auto e : edges(pm_)) result.feature_edges += classification.is_feature(e);
     }
     const std::vector<Candidate> candidates = rank(classification, normals, areas, node_factors);
-    auto marks = get(CGAL::dynamic_vertex_property_t<bool>(), pm_);
+    // char, not bool: OpenMesh stores a bool property in a std::vector<bool>, whose
+    // elements its property map cannot return by reference (does not compile).
+    auto marks = get(CGAL::dynamic_vertex_property_t<char>(), pm_);
     for (vertex_descriptor v : vertices(pm_)) put(marks, v, false);
 
     const bool reduction = options_.mode == Optimization_mode::reduction;

@@ -95,7 +95,11 @@ class Region_retriangulator {
   const std::vector<Vertex_triangle>& last_triangles() const { return last_triangles_; }
 
  private:
-  const Point& point(vertex_descriptor v) const { return get(vpm_, v); }
+  // The map's own reference type: a point map that converts (OpenMesh's stores OpenMesh::Vec3d)
+  // returns a Point by value, and `const Point&` would dangle.
+  typename boost::property_traits<VertexPointMap>::reference point(vertex_descriptor v) const {
+    return get(vpm_, v);
+  }
 
   Vector face_normal(face_descriptor f) const {
     const halfedge_descriptor h = halfedge(f, pm_);

@@ -257,7 +257,8 @@ class Ply_record_reader {
 
  private:
   double binary(Ply_type type) {
-    unsigned char b[8];
+    // Zeroed for GCC's -Wmaybe-uninitialized, which cannot see that read() fills the first n.
+    unsigned char b[8] = {};
     const std::size_t n = ply_size(type);
     if (!in_.read(b, n)) fail("the file ends inside a record");
     if (format_ == Ply_format::big_endian) std::reverse(b, b + n);  // to little-endian

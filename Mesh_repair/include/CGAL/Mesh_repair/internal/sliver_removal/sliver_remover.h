@@ -76,7 +76,11 @@ class Sliver_remover {
  private:
   // ---- measures ---------------------------------------------------------------------------------
 
-  const Point& point(vertex_descriptor v) const { return get(vpm_, v); }
+  // The map's own reference type: a point map that converts (OpenMesh's stores OpenMesh::Vec3d)
+  // returns a Point by value, and `const Point&` would dangle.
+  typename boost::property_traits<VertexPointMap>::reference point(vertex_descriptor v) const {
+    return get(vpm_, v);
+  }
 
   double length(halfedge_descriptor h) const {
     return std::sqrt(

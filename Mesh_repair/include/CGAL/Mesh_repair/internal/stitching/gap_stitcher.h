@@ -474,7 +474,9 @@ class Gap_stitcher {
     visitor_.start_step("T-junctions");
     // Border edges already matched by a partner form conforming seams: only the others (and
     // their nodes) can take part in a T-junction, so the search scales with the defects.
-    auto matched = get(CGAL::dynamic_halfedge_property_t<bool>(), pm_);
+    // char, not bool: OpenMesh stores a bool property in a std::vector<bool>, whose
+    // elements its property map cannot return by reference (does not compile).
+    auto matched = get(CGAL::dynamic_halfedge_property_t<char>(), pm_);
     for (halfedge_descriptor h : halfedges(pm_)) put(matched, h, false);
     for (const auto& [h1, h2] : matching_border_pairs_cached()) {
       put(matched, h1, true);
