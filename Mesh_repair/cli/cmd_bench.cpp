@@ -6,6 +6,7 @@
 // results.jsonl, table.md and plots.
 #include "commands.h"
 #include "common.h"
+#include "picture.h"
 
 #include <CGAL/Mesh_repair/fill_holes.h>
 #include <CGAL/Mesh_repair/hole_benchmark.h>
@@ -20,6 +21,8 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <memory>
+#include <set>
 #include <sstream>
 #include <tuple>
 
@@ -30,13 +33,17 @@ const char* const bench_help =
     "          [--analytic sphere|torus|saddle]...\n"
     "          --holes K --radius F[,F2,...] --seeds S1[,S2,...] --methods a[,b,...]|all\n"
     "          [--shape disc|jagged|elongated|ring] --out DIR [--no-plots]\n"
-    "          [--plot-script plot_bench.py] [--quiet]\n"
+    "          [--no-pictures] [--plot-script plot_bench.py] [--quiet]\n"
     "Punches K holes of radius F x bounding-box diagonal into each mesh (deterministic per\n"
     "seed), fills them with every method in this process and measures each fill against the\n"
     "removed patch (exact distance on analytic surfaces): E1, E2, Einf (also / diagonal),\n"
     "Hausdorff distance, normal deviation across the border, patch quality, closedness,\n"
     "self-intersections, time. Writes DIR/results.jsonl (one line per hole x method x seed),\n"
-    "DIR/table.md (median and worst per method) and DIR/*.png (scripts/plot_bench.py).\n"
+    "DIR/table.md (median and worst per method), DIR/*.png (scripts/plot_bench.py) and, per\n"
+    "hole, DIR/pictures/*.png: the truth and each method's patch with its surroundings,\n"
+    "coloured by distance to the truth on one scale per hole (scripts/render_patches.py),\n"
+    "shown beside each hole's figures in DIR/index.html (--no-pictures: none). Plots and\n"
+    "pictures need python3-matplotlib; without it one line says so and the rest is written.\n"
     "Methods: advancing_front, liepa (CGAL's default continuity 1), liepa_c0, liepa_c1,\n"
     "liepa_c2, shape_prediction, curvature_variation (its defaults: phi_DeltaF over the free and\n"
     "contour nodes), self_validated (the hole's surroundings choose among the faired methods;\n"
@@ -114,6 +121,7 @@ struct Options {
   MR::Hole_shape shape = MR::Hole_shape::disc;
   std::string out;
   bool plots = true;
+  bool pictures = true;
   bool progress = false;
   std::string plot_script;
 };
@@ -143,7 +151,7 @@ Options parse_options(const std::vector<std::string>& args) {
   if (args.empty() || args[0] != "holes")
     throw Input_error("expected 'bench holes' (the only benchmark); see --help");
   const Arguments arguments(std::vector<std::string>(args.begin() + 1, args.end()),
-                            {"--no-plots", "--quiet"},
+                            {"--no-plots", "--no-pictures", "--quiet"},
                             {"--mesh", "--meshes", "--analytic", "--holes", "--radius", "--seeds",
                              "--methods", "--shape", "--out", "--plot-script"});
   if (!arguments.positional().empty())
@@ -182,6 +190,7 @@ Options parse_options(const std::vector<std::string>& args) {
   o.out = arguments.get("--out");
   if (o.out.empty()) throw Input_error("--out DIR is required");
   o.plots = !arguments.has("--no-plots");
+  o.pictures = !arguments.has("--no-pictures");
   o.progress = progress_wanted(arguments);
   o.plot_script = arguments.get("--plot-script");
   return o;
@@ -197,7 +206,7 @@ MR::Hole_fill_report fill_one(Mesh& mesh, halfedge_descriptor border, const Meth
 
 // One line of results.jsonl, kept for the table.
 struct Row {
-  std::string mesh, method, failure;
+  std::string mesh, method, failure, used;
   double radius = 0;
   unsigned int seed = 0;
   std::size_t hole = 0;
@@ -288,6 +297,7 @@ void write_row(std::ostream& out, const Case_context& context, const Options& op
   row.mesh = context.name;
   row.method = method.name;
   row.failure = report.failure;
+  row.used = MR::to_string(report.used);
   row.radius = radius;
   row.seed = seed;
   row.hole = hole_index;
@@ -297,10 +307,166 @@ void write_row(std::ostream& out, const Case_context& context, const Options& op
   row.self_intersecting = m.self_intersections > 0;
 }
 
+// --- pictures --------------------------------------------------------------------------------
+
+std::string format(double value);
+
+// A name safe in a file name and in HTML.
+std::string file_name_part(const std::string& text) {
+  std::string name = text;
+  for (char& c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '.') c = '_';
+  return name;
+}
+
+// The picture of one hole, named after it, and the rows it shows.
+struct Picture_entry {
+  std::string title, picture;  // picture: relative to DIR
+  std::string mesh;
+  double radius = 0;
+  unsigned int seed = 0;
+  std::size_t hole = 0;
+};
+
+// The pictures of one punched mesh (one case, radius and seed): one scene per hole, the truth's
+// panel first, then one panel per method, all from the same faces around the hole (Surface_mesh
+// copies keep descriptors, so the faces around a hole of `holed` are the same in every filled
+// copy, where a method may have moved the border's neighbours).
+class Hole_pictures {
+ public:
+  Hole_pictures(const Mesh& holed, const std::vector<Hole>& holes, const Case_context& context,
+                double radius, unsigned int seed)
+      : holes_(holes), context_(context), radius_(radius), seed_(seed) {
+    for (std::size_t i = 0; i < holes.size(); ++i) views_.push_back(truth_view(holed, i));
+  }
+
+  // The panel of `method` for each hole: its patch in `filled`, coloured by distance to the truth.
+  void add_method(const Mesh& filled, const std::vector<std::vector<Mesh::Face_index>>& patches,
+                  const std::string& method, const Row* rows) {
+    for (std::size_t i = 0; i < views_.size(); ++i) {
+      Picture_panel panel = method_panel(filled, i, patches[i], rows[i]);
+      View& view = views_[i];
+      const bool clean = rows[i].closed && !rows[i].self_intersecting;
+      for (double v : panel.values)
+        if (std::isfinite(v))
+          (clean ? view.clean_max : view.any_max) =
+              std::max(clean ? view.clean_max : view.any_max, v);
+      panel.title =
+          method + (rows[i].used != method && rows[i].filled ? " (" + rows[i].used + ")" : "");
+      view.scene.panels.push_back(std::move(panel));
+    }
+  }
+
+  // Writes each hole's scene as DIR/pictures/NAME.json; the pictures are NAME.png.
+  void write(const std::string& out, std::vector<std::pair<std::string, std::string>>& jobs,
+             std::vector<Picture_entry>& entries) {
+    for (std::size_t i = 0; i < views_.size(); ++i) {
+      View& view = views_[i];
+      set_scale(view);
+      const std::string name = file_name_part(context_.name) + "-r" + format(radius_) + "-s" +
+                               std::to_string(seed_) + "-h" + std::to_string(i);
+      const std::string base = out + "/pictures/" + name;
+      save_text(base + ".json", scene_json(view.scene));
+      jobs.emplace_back(base + ".json", base + ".png");
+      entries.push_back(
+          {view.scene.title, "pictures/" + name + ".png", context_.name, radius_, seed_, i});
+    }
+  }
+
+ private:
+  struct View {
+    std::vector<Mesh::Face_index> around;
+    std::vector<std::vector<Mesh::Vertex_index>> borders;
+    Picture_scene scene;
+    double clean_max = 0, any_max = 0;
+  };
+
+  View truth_view(const Mesh& holed, std::size_t i) {
+    const Hole& hole = holes_[i];
+    View view;
+    view.borders.push_back(border_loop(holed, hole.border_halfedge));
+    for (Mesh::Halfedge_index h : hole.island_border_halfedges)
+      view.borders.push_back(border_loop(holed, h));
+    std::vector<Mesh::Vertex_index> seeds;
+    for (const auto& loop : view.borders) seeds.insert(seeds.end(), loop.begin(), loop.end());
+    view.around = surrounding_faces(holed, seeds, surrounding_rings(hole.outer_border_edges), {});
+    const Mesh& truth = hole.removed_patch;
+    view.scene.title = context_.name + ", radius " + format(radius_) + ", seed " +
+                       std::to_string(seed_) + ", hole " + std::to_string(i) + ": " +
+                       std::to_string(hole.outer_border_edges) + " border edges";
+    view.scene.normal = mean_normal(truth, truth.faces());
+    view.scene.scale_label = context_.analytic
+                                 ? "distance to the exact surface / bounding-box diagonal"
+                                 : "distance to the removed faces / bounding-box diagonal";
+    Picture_panel panel;
+    Panel_builder builder(panel);
+    const std::vector<Mesh::Face_index> truth_faces(truth.faces().begin(), truth.faces().end());
+    const std::vector<double> values = face_distances(truth, truth_faces, hole);
+    for (std::size_t k = 0; k < truth_faces.size(); ++k)
+      builder.add_face(truth, truth_faces[k], values[k]);
+    add_surroundings(builder, holed, view);
+    panel.title = "truth";
+    panel.subtitle = "the removed faces";
+    view.scene.panels.push_back(std::move(panel));
+    return view;
+  }
+
+  Picture_panel method_panel(const Mesh& filled, std::size_t i,
+                             const std::vector<Mesh::Face_index>& patch, const Row& row) {
+    Picture_panel panel;
+    Panel_builder builder(panel);
+    const std::vector<double> values = face_distances(filled, patch, holes_[i]);
+    for (std::size_t k = 0; k < patch.size(); ++k) builder.add_face(filled, patch[k], values[k]);
+    add_surroundings(builder, filled, views_[i]);
+    if (patch.empty()) {
+      panel.subtitle = "not filled";
+    } else {
+      panel.subtitle = "Einf/diag " + format(row.values.at("einf_rel"));
+      if (!row.closed) panel.subtitle += ", not closed";
+      if (row.self_intersecting) panel.subtitle += ", self-intersecting";
+    }
+    return panel;
+  }
+
+  void add_surroundings(Panel_builder& builder, const Mesh& mesh, const View& view) const {
+    for (Mesh::Face_index f : view.around) builder.add_face(mesh, f, std::nan(""));
+    for (const auto& loop : view.borders) builder.add_border(mesh, loop);
+  }
+
+  // Distance of each face's centroid to the truth, over the diagonal.
+  std::vector<double> face_distances(const Mesh& mesh, const std::vector<Mesh::Face_index>& faces,
+                                     const Hole& hole) const {
+    std::vector<Point> centroids;
+    for (Mesh::Face_index f : faces) {
+      const auto h = mesh.halfedge(f);
+      centroids.push_back(CGAL::centroid(mesh.point(mesh.source(h)), mesh.point(mesh.target(h)),
+                                         mesh.point(mesh.target(mesh.next(h)))));
+    }
+    std::vector<double> d = MR::distances_to_truth(hole, centroids, context_.exact);
+    for (double& v : d) v /= context_.diagonal > 0 ? context_.diagonal : 1.0;
+    return d;
+  }
+
+  // One scale for every method of the hole, up to the largest distance among the patches that
+  // closed it cleanly: a failed patch far off would otherwise wash out every other panel. Larger
+  // distances are drawn in the top colour (the colour bar then ends in an arrow).
+  static void set_scale(View& view) {
+    const double top = view.clean_max > 0 ? view.clean_max : view.any_max;
+    view.scene.scale_max = top > 0 ? top : 1e-6;
+    view.scene.scale_clipped = view.any_max > view.scene.scale_max;
+  }
+
+  const std::vector<Hole>& holes_;
+  const Case_context& context_;
+  double radius_;
+  unsigned int seed_;
+  std::vector<View> views_;
+};
+
 // Fills every hole of `holed` with `method` and appends one row per hole.
 void run_method(const Mesh& holed, const std::vector<Hole>& holes, const Case_context& context,
                 const Options& options, double radius, unsigned int seed, const Method& method,
-                std::ostream& jsonl, std::vector<Row>& rows) {
+                std::ostream& jsonl, std::vector<Row>& rows, Hole_pictures* pictures) {
   Mesh mesh = holed;  // Surface_mesh copies keep every descriptor, so `holes` stay valid
   std::vector<MR::Hole_fill_report> reports;
   for (const Hole& hole : holes) {
@@ -333,6 +499,7 @@ void run_method(const Mesh& holed, const std::vector<Hole>& holes, const Case_co
     write_row(jsonl, context, options, radius, seed, i, holes[i], method, reports[i], m,
               mesh_closed, mesh_valid, rows.back());
   }
+  if (pictures) pictures->add_method(mesh, patches, method.name, &rows[rows.size() - holes.size()]);
 }
 
 Mesh load_case(const Bench_case& c, Case_context& context) {
@@ -558,27 +725,100 @@ std::string table_markdown(const std::vector<Row>& rows, const std::string& comm
 std::string plot_script_path(const Options& options) {
   if (!options.plot_script.empty()) return options.plot_script;
   if (const char* env = std::getenv("MESH_REPAIR_PLOT_SCRIPT")) return env;
-#ifdef MESH_REPAIR_PLOT_SCRIPT
-  return MESH_REPAIR_PLOT_SCRIPT;
-#else
-  return {};
-#endif
+  return script_path("plot_bench.py");
 }
 
-// Plots are a convenience: a missing script or interpreter is a warning, never a failure.
+// Plots are a convenience: a missing script or a failing one is a warning, never a failure.
 void make_plots(const Options& options) {
   const std::string script = plot_script_path(options);
-  if (script.empty() || !std::filesystem::exists(script)) {
+  if (!std::filesystem::exists(script)) {
     std::cerr << "mesh_repair bench: plot script not found, no plots (--plot-script)\n";
     return;
   }
-  // Debian's interpreter has python3-matplotlib even when another python3 comes first in PATH.
-  const std::string python =
-      std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
-  const std::string command =
-      python + " '" + script + "' '" + options.out + "/results.jsonl' '" + options.out + "'";
-  if (std::system(command.c_str()) != 0)
+  if (run_python_script(script, {options.out + "/results.jsonl", options.out}) != 0)
     std::cerr << "mesh_repair bench: the plot script failed; results and table are written\n";
+}
+
+std::string html(const std::string& text) {
+  std::string escaped;
+  for (char c : text) {
+    if (c == '<')
+      escaped += "&lt;";
+    else if (c == '>')
+      escaped += "&gt;";
+    else if (c == '&')
+      escaped += "&amp;";
+    else if (c == '"')
+      escaped += "&quot;";
+    else
+      escaped += c;
+  }
+  return escaped;
+}
+
+// The figures of every method on one hole, as an HTML table.
+void hole_table(std::ostream& out, const Picture_entry& entry, const std::vector<Row>& rows) {
+  out << "<table><tr><th>method</th><th>kept patch</th><th>closed</th><th>Einf/diag</th>"
+         "<th>E2/diag</th><th>Hausdorff/diag</th><th>normal dev. max (deg)</th><th>time (s)</th>"
+         "</tr>\n";
+  for (const Row& row : rows) {
+    if (row.mesh != entry.mesh || row.radius != entry.radius || row.seed != entry.seed ||
+        row.hole != entry.hole)
+      continue;
+    const std::string closed = row.closed ? (row.self_intersecting ? "self-intersecting" : "yes")
+                                          : (row.failure.empty() ? "no" : "no: " + row.failure);
+    out << "<tr><td>" << html(row.method) << "</td><td>" << html(row.filled ? row.used : "-")
+        << "</td><td>" << html(closed) << "</td>";
+    for (const char* key :
+         {"einf_rel", "e2_rel", "hausdorff_rel", "normal_deviation_max_deg", "seconds"})
+      out << "<td>" << format(row.values.at(key)) << "</td>";
+    out << "</tr>\n";
+  }
+  out << "</table>\n";
+}
+
+// DIR/index.html: every hole's picture beside the figures of every method on it.
+std::string pictures_page(const std::vector<Picture_entry>& entries, const std::vector<Row>& rows,
+                          const std::string& command, const std::string& out_dir) {
+  std::ostringstream out;
+  out << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>bench holes</title>\n"
+         "<style>body{font-family:sans-serif;font-size:14px} .hole{display:flex;flex-wrap:wrap;"
+         "gap:1em;align-items:flex-start} img{max-width:100%} table{border-collapse:collapse} "
+         "td,th{border:1px solid #ccc;padding:2px 6px;text-align:right} td:first-child,"
+         "th:first-child{text-align:left}</style></head><body>\n";
+  out << "<h1>Hole-filling benchmark</h1>\n<p><code>" << html(command) << "</code></p>\n"
+      << "<p>Medians and worst cases: <a href=\"table.md\">table.md</a>; every measure: "
+         "<a href=\"results.jsonl\">results.jsonl</a> (doc/bench_holes.md). In each picture the "
+         "truth and every method's patch are coloured by the distance of each face's centre to "
+         "the truth over the bounding-box diagonal, on one scale per hole (up to the largest "
+         "distance of the patches that closed the hole cleanly); grey: the surface kept around "
+         "the hole; black: the hole's border.</p>\n";
+  for (const Picture_entry& entry : entries) {
+    out << "<h3>" << html(entry.title) << "</h3>\n<div class=\"hole\">\n";
+    hole_table(out, entry, rows);
+    if (std::filesystem::exists(out_dir + "/" + entry.picture))
+      out << "<a href=\"" << html(entry.picture) << "\"><img src=\"" << html(entry.picture)
+          << "\" alt=\"" << html(entry.title) << "\"></a>\n";
+    else
+      out << "<p>(no picture: see the command's messages)</p>\n";
+    out << "</div>\n";
+  }
+  out << "</body></html>\n";
+  return out.str();
+}
+
+// Plots and pictures need matplotlib: without it one line says so, and the scene files stay so
+// the pictures can be drawn later (scripts/render_patches.py SCENE PNG ...).
+void draw(const Options& options, const std::vector<std::pair<std::string, std::string>>& jobs) {
+  const std::string unavailable = plotting_unavailable();
+  if (!unavailable.empty()) {
+    std::cerr << "mesh_repair bench: no plots and no pictures: " << unavailable << '\n';
+    return;
+  }
+  if (options.plots) make_plots(options);
+  if (jobs.empty() || !render_pictures(jobs, "mesh_repair bench")) return;
+  std::error_code ignored;
+  for (const auto& job : jobs) std::filesystem::remove(job.first, ignored);
 }
 
 std::string quoted_command(const std::vector<std::string>& args) {
@@ -601,6 +841,10 @@ int run_bench(const std::vector<std::string>& args) {
   std::ostringstream jsonl;
   std::vector<Row> rows;
   std::vector<std::string> warnings;
+  std::vector<std::pair<std::string, std::string>> jobs;  // scene file, picture
+  std::vector<Picture_entry> entries;
+  if (options.pictures) std::filesystem::create_directories(options.out + "/pictures", error);
+  if (error) throw Input_error(options.out + "/pictures: cannot be created: " + error.message());
   bar.start_step("bench holes");
   for (const Bench_case& c : options.cases) {
     Case_context context;
@@ -617,19 +861,28 @@ int run_bench(const std::vector<std::string>& args) {
                              std::to_string(seed) + ": " + punched.shortfall);
           std::cerr << "\nmesh_repair bench: " << warnings.back() << '\n';
         }
+        std::unique_ptr<Hole_pictures> pictures;
+        if (options.pictures)
+          pictures = std::make_unique<Hole_pictures>(holed, punched.holes, context, radius, seed);
         for (const Method& method : options.methods) {
-          run_method(holed, punched.holes, context, options, radius, seed, method, jsonl, rows);
+          run_method(holed, punched.holes, context, options, radius, seed, method, jsonl, rows,
+                     pictures.get());
           if (!bar.progress(double(++done) / double(total))) return exit_incomplete;
         }
+        if (pictures) pictures->write(options.out, jobs, entries);
       }
     }
   }
   bar.end_step("bench holes");
   save_text(options.out + "/results.jsonl", jsonl.str());
   save_text(options.out + "/table.md", table_markdown(rows, quoted_command(args), warnings));
-  if (options.plots) make_plots(options);
+  if (options.plots || options.pictures) draw(options, jobs);
+  if (options.pictures)
+    save_text(options.out + "/index.html",
+              pictures_page(entries, rows, quoted_command(args), options.out));
   std::cout << rows.size() << " results in " << options.out << "/results.jsonl, table in "
-            << options.out << "/table.md\n";
+            << options.out << "/table.md"
+            << (options.pictures ? ", pictures in " + options.out + "/index.html" : "") << '\n';
   return exit_success;
 }
 

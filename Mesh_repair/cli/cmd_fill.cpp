@@ -4,15 +4,23 @@
 // optionally a JSON report with one entry per hole.
 #include "commands.h"
 #include "common.h"
+#include "picture.h"
 
 #include <CGAL/Mesh_repair/fill_holes.h>
 #include <CGAL/Mesh_repair/io.h>
 
+#include <CGAL/Polygon_mesh_processing/border.h>
+
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <map>
+#include <set>
 #include <sstream>
+
+#include <unistd.h>
 
 namespace mesh_repair_cli {
 
@@ -22,7 +30,8 @@ const char* const fill_help =
     "                     self_validated|auto]\n"
     "           [--continuity 0|1|2] [--max-hole-edges N] [--max-hole-size F] [--seed S]\n"
     "           [--sheet-border-ratio F | --fill-sheet-borders]\n"
-    "           [--no-ring-holes] [--threads N] [--report R.json] [--quiet]\n"
+    "           [--no-ring-holes] [--threads N] [--report R.json] [--picture P.png]\n"
+    "           [--quiet]\n"
     "           [--objective forces|force_variation] [--nodes free|free_and_contour]\n"
     "           [--grid disc|refined_liepa] [--force-density uniform|inverse_length|cotangent]\n"
     "           [--constraints FILE]\n"
@@ -49,6 +58,10 @@ const char* const fill_help =
     "  --threads N          threads for independent holes (default: all cores); the output\n"
     "                       is the same for every N\n"
     "  --report R.json      write one JSON entry per hole\n"
+    "  --picture P.png      draw the filled holes (the 12 largest) and the holes left open with\n"
+    "                       their surroundings, each patch coloured by the method that filled\n"
+    "                       it, borders in black; needs python3-matplotlib (without it one\n"
+    "                       line says so and the rest of the command still succeeds)\n"
     "  --quiet              no progress bar, no summary\n"
     "curvature_variation (Pernot et al., doc/curvature_variation.md):\n"
     "  --objective O        forces (eq. 8) or force_variation (eq. 9, default)\n"
@@ -125,6 +138,134 @@ Curvature_options parse_curvature_options(const Arguments& arguments) {
   return options;
 }
 
+// --- the picture of --picture -------------------------------------------------------------
+
+// More panels than this would be too small to read; the largest holes are the ones to look at.
+constexpr std::size_t max_picture_panels = 12;
+
+// A hole to draw: its patch (empty when left open) and border loops.
+struct Shown_hole {
+  std::size_t report = 0;
+  std::size_t border_edges = 0;
+  std::set<Mesh::Face_index> patch;
+  std::vector<std::vector<Mesh::Vertex_index>> borders;
+};
+
+std::vector<Shown_hole> filled_holes(
+    const Mesh& mesh, const CGAL::Mesh_repair::Fill_result& result,
+    const std::vector<CGAL::Mesh_repair::Fill_patch<Mesh>>& patches) {
+  std::vector<Shown_hole> shown;
+  for (std::size_t k = 0; k < result.holes.size() && k < patches.size(); ++k) {
+    if (!result.holes[k].filled) continue;
+    Shown_hole hole{k, result.holes[k].border_edges, {}, {}};
+    for (Mesh::Face_index f : patches[k].faces)
+      if (!mesh.is_removed(f)) hole.patch.insert(f);
+    if (hole.patch.empty()) continue;
+    hole.borders = region_borders(mesh, hole.patch);
+    shown.push_back(hole);
+  }
+  return shown;
+}
+
+// The holes that failed are border cycles of the output; the report of each is the failed one
+// of the same border size (the reports do not keep a border halfedge).
+std::vector<Shown_hole> open_holes(const Mesh& mesh, const CGAL::Mesh_repair::Fill_result& result) {
+  std::vector<Mesh::Halfedge_index> cycles;
+  CGAL::Polygon_mesh_processing::extract_boundary_cycles(mesh, std::back_inserter(cycles));
+  std::vector<bool> matched(result.holes.size(), false);
+  std::vector<Shown_hole> shown;
+  for (Mesh::Halfedge_index h : cycles) {
+    std::vector<Mesh::Vertex_index> loop = border_loop(mesh, h);
+    for (std::size_t k = 0; k < result.holes.size(); ++k) {
+      const auto& report = result.holes[k];
+      if (matched[k] || report.filled || report.skipped || report.border_edges != loop.size())
+        continue;
+      matched[k] = true;
+      shown.push_back({k, loop.size(), {}, {loop}});
+      break;
+    }
+  }
+  return shown;
+}
+
+std::string shorten(const std::string& text, std::size_t length) {
+  return text.size() <= length ? text : text.substr(0, length - 3) + "...";
+}
+
+// Each patch face's legend index: the method that filled its hole.
+std::map<Mesh::Face_index, double> faces_by_method(const CGAL::Mesh_repair::Fill_result& result,
+                                                   const std::vector<Shown_hole>& filled,
+                                                   std::vector<std::string>& legend) {
+  std::map<Mesh::Face_index, double> category;
+  for (const Shown_hole& hole : filled) {
+    const std::string name = CGAL::Mesh_repair::to_string(result.holes[hole.report].used);
+    auto it = std::find(legend.begin(), legend.end(), name);
+    if (it == legend.end()) it = legend.insert(legend.end(), name);
+    for (Mesh::Face_index f : hole.patch) category[f] = double(it - legend.begin());
+  }
+  return category;
+}
+
+Picture_panel hole_panel(const Mesh& mesh, const Shown_hole& hole,
+                         const CGAL::Mesh_repair::Hole_fill_report& report,
+                         const std::map<Mesh::Face_index, double>& category) {
+  Picture_panel panel;
+  Panel_builder builder(panel);
+  std::vector<Mesh::Vertex_index> seeds;
+  for (const auto& loop : hole.borders) seeds.insert(seeds.end(), loop.begin(), loop.end());
+  const auto around =
+      surrounding_faces(mesh, seeds, surrounding_rings(hole.border_edges), hole.patch);
+  for (Mesh::Face_index f : hole.patch) builder.add_face(mesh, f, category.at(f));
+  for (Mesh::Face_index f : around) {
+    const auto it = category.find(f);  // a neighbouring hole's patch keeps its colour
+    builder.add_face(mesh, f, it == category.end() ? std::nan("") : it->second);
+  }
+  for (const auto& loop : hole.borders) builder.add_border(mesh, loop);
+  panel.normal = hole.patch.empty() ? mean_normal(mesh, around) : mean_normal(mesh, hole.patch);
+  panel.title = "hole " + std::to_string(hole.report) + ": " + std::to_string(hole.border_edges) +
+                " border edges";
+  panel.subtitle = report.filled ? std::string(CGAL::Mesh_repair::to_string(report.used)) + ", " +
+                                       std::to_string(report.faces_created) + " faces"
+                                 : "left open: " + shorten(report.failure, 40);
+  return panel;
+}
+
+Picture_scene fill_scene(const std::string& input, const Mesh& mesh,
+                         const CGAL::Mesh_repair::Fill_result& result,
+                         const std::vector<CGAL::Mesh_repair::Fill_patch<Mesh>>& patches) {
+  std::vector<Shown_hole> holes = filled_holes(mesh, result, patches);
+  Picture_scene scene;
+  const auto category = faces_by_method(result, holes, scene.legend);
+  const std::vector<Shown_hole> open = open_holes(mesh, result);
+  holes.insert(holes.end(), open.begin(), open.end());
+  std::stable_sort(holes.begin(), holes.end(), [](const Shown_hole& a, const Shown_hole& b) {
+    return a.border_edges > b.border_edges;
+  });
+  const std::size_t total = holes.size();
+  holes.resize(std::min(holes.size(), max_picture_panels));
+  for (const Shown_hole& hole : holes)
+    scene.panels.push_back(hole_panel(mesh, hole, result.holes[hole.report], category));
+  scene.title =
+      std::filesystem::path(input).filename().string() + ": " + std::to_string(result.filled) +
+      " hole(s) filled, " + std::to_string(result.failed) + " left open" +
+      (total > holes.size() ? "; the " + std::to_string(holes.size()) + " largest shown" : "");
+  if (scene.legend.empty()) scene.legend.push_back("(no patch)");
+  return scene;
+}
+
+// Writes the scene beside the picture, renders it, removes the scene.
+void write_fill_picture(const std::string& picture, const Picture_scene& scene) {
+  if (scene.panels.empty()) {
+    std::cerr << "mesh_repair fill: no picture: no hole was filled or left open\n";
+    return;
+  }
+  const std::string scene_file = picture + ".scene-" + std::to_string(::getpid()) + ".json";
+  save_text(scene_file, scene_json(scene));
+  render_pictures({{scene_file, picture}}, "mesh_repair fill");
+  std::error_code ignored;
+  std::filesystem::remove(scene_file, ignored);
+}
+
 }  // namespace
 
 int run_fill(const std::vector<std::string>& args) {
@@ -132,7 +273,7 @@ int run_fill(const std::vector<std::string>& args) {
   Arguments arguments(args, {"--quiet", "--no-ring-holes", "--fill-sheet-borders"},
                       {"-o", "--method", "--continuity", "--max-hole-edges", "--max-hole-size",
                        "--seed", "--threads", "--report", "--objective", "--nodes", "--grid",
-                       "--force-density", "--constraints", "--sheet-border-ratio"});
+                       "--force-density", "--constraints", "--sheet-border-ratio", "--picture"});
   const std::string input = arguments.single_input(fill_help);
   if (!arguments.has("-o")) throw Input_error("missing -o OUT; usage: " + std::string(fill_help));
   const MR::Fill_method method = parse_method(arguments.get("--method", "self_validated"));
@@ -150,6 +291,9 @@ int run_fill(const std::vector<std::string>& args) {
   const double sheet_ratio = fill_sheets ? std::numeric_limits<double>::infinity()
                                          : arguments.get_double("--sheet-border-ratio", 0.9);
   if (!(sheet_ratio > 0)) throw Input_error("--sheet-border-ratio must be positive");
+  const std::string picture = arguments.get("--picture");
+  if (arguments.has("--picture") && std::filesystem::path(picture).extension() != ".png")
+    throw Input_error("--picture expects a .png file, got '" + picture + "'");
   const long long seed = arguments.get_int("--seed", 0);
   if (seed < 0) throw Input_error("--seed must be non-negative");
   const long long threads = arguments.get_int("--threads", 0);
@@ -163,22 +307,24 @@ int run_fill(const std::vector<std::string>& args) {
   if (!CGAL::is_triangle_mesh(mesh)) throw Input_error(input + ": not a triangle mesh");
 
   Progress_bar progress(progress_wanted(arguments));
+  std::vector<MR::Fill_patch<Mesh>> patches;
   const MR::Fill_result result = MR::fill_holes(
-      mesh, MR::parameters::fill_method(method)
-                .fairing_continuity(unsigned(continuity))
-                .max_hole_edges(max_edges < 0 ? std::numeric_limits<std::size_t>::max()
-                                              : std::size_t(max_edges))
-                .max_hole_size(max_size < 0 ? std::numeric_limits<double>::infinity() : max_size)
-                .sheet_border_ratio(sheet_ratio)
-                .random_seed(unsigned(seed))
-                .number_of_threads(int(std::min<long long>(threads, 1024)))
-                .detect_ring_holes(!arguments.has("--no-ring-holes"))
-                .visitor(std::ref(progress))
-                .curvature_objective(curvature.objective)
-                .objective_nodes(curvature.nodes)
-                .topological_grid(curvature.grid)
-                .force_density(curvature.density)
-                .fill_constraints(curvature.constraints));
+      mesh, patches,
+      MR::parameters::fill_method(method)
+          .fairing_continuity(unsigned(continuity))
+          .max_hole_edges(max_edges < 0 ? std::numeric_limits<std::size_t>::max()
+                                        : std::size_t(max_edges))
+          .max_hole_size(max_size < 0 ? std::numeric_limits<double>::infinity() : max_size)
+          .sheet_border_ratio(sheet_ratio)
+          .random_seed(unsigned(seed))
+          .number_of_threads(int(std::min<long long>(threads, 1024)))
+          .detect_ring_holes(!arguments.has("--no-ring-holes"))
+          .visitor(std::ref(progress))
+          .curvature_objective(curvature.objective)
+          .objective_nodes(curvature.nodes)
+          .topological_grid(curvature.grid)
+          .force_density(curvature.density)
+          .fill_constraints(curvature.constraints));
   if (result.cancelled) throw Input_error("interrupted");
 
   const bool closed = CGAL::is_closed(mesh);
@@ -198,6 +344,7 @@ int run_fill(const std::vector<std::string>& args) {
     text << "\n";
     save_text(arguments.get("--report"), text.str());
   }
+  if (!picture.empty()) write_fill_picture(picture, fill_scene(input, mesh, result, patches));
   const bool complete = result.all_filled() && (result.skipped > 0 || closed);
   return complete ? exit_success : exit_incomplete;
 }

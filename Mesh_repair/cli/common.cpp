@@ -6,13 +6,21 @@
 #include <CGAL/Mesh_repair/io.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+
+#include <cerrno>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 #include <unistd.h>
+
+extern char** environ;
 
 namespace mesh_repair_cli {
 
@@ -82,7 +90,7 @@ std::string Arguments::single_input(const std::string& usage) const {
 void Arguments::check_outputs(const std::string& input) const {
   namespace MRI = CGAL::Mesh_repair::internal;
   std::vector<std::string> outputs;
-  for (const char* option : {"-o", "--report", "--json", "--summary", "--patch-out"})
+  for (const char* option : {"-o", "--report", "--json", "--summary", "--patch-out", "--picture"})
     if (has(option)) outputs.push_back(get(option));
   for (std::size_t i = 0; i < outputs.size(); ++i) {
     const std::string& out = outputs[i];
@@ -253,6 +261,60 @@ void Progress_bar::draw(double fraction) {
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::string script_path(const std::string& file_name) {
+#ifdef MESH_REPAIR_SCRIPTS_DIR
+  return std::string(MESH_REPAIR_SCRIPTS_DIR) + "/" + file_name;
+#else
+  return "scripts/" + file_name;
+#endif
+}
+
+namespace {
+std::string python_interpreter() {
+  if (const char* chosen = std::getenv("MESH_REPAIR_PYTHON")) return chosen;
+  return std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+}
+
+// Runs `argv` without a shell and waits; the exit status, -1 when it did not start or exit.
+int run_program(const std::vector<std::string>& argv, bool quiet) {
+  std::vector<char*> c_argv;
+  for (const std::string& a : argv) c_argv.push_back(const_cast<char*>(a.c_str()));
+  c_argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  if (quiet) {
+    posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_adddup2(&actions, 1, 2);
+  }
+  pid_t pid = 0;
+  const int started = ::posix_spawnp(&pid, c_argv[0], &actions, nullptr, c_argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (started != 0) return -1;
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0)
+    if (errno != EINTR) return -1;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+}  // namespace
+
+std::string plotting_unavailable() {
+  static const std::string reason = [] {
+    const std::string python = python_interpreter();
+    const int status = run_program({python, "-c", "import matplotlib"}, true);
+    if (status == 0) return std::string();
+    if (status == -1 || status == 127) return python + " cannot be run";
+    return python +
+           " has no matplotlib (Debian: python3-matplotlib, scripts/setup.sh --with-plots)";
+  }();
+  return reason;
+}
+
+int run_python_script(const std::string& script, const std::vector<std::string>& args) {
+  std::vector<std::string> argv = {python_interpreter(), script};
+  argv.insert(argv.end(), args.begin(), args.end());
+  return run_program(argv, false);
 }
 
 }  // namespace mesh_repair_cli

@@ -50,8 +50,8 @@ class Arguments {
   long long get_int(const std::string& name, long long fallback) const;
   const std::vector<std::string>& positional() const { return positional_; }
   /// The single input file, or a usage error naming `usage`. Also checks, before any work,
-  /// that every output (-o, --report, --json, --summary, --patch-out) is writable and is not
-  /// the input (same device and inode, so links count) nor another output.
+  /// that every output (-o, --report, --json, --summary, --patch-out, --picture) is writable and is
+  /// not the input (same device and inode, so links count) nor another output.
   std::string single_input(const std::string& usage) const;
   /// The output checks of `single_input`.
   void check_outputs(const std::string& input) const;
@@ -111,6 +111,19 @@ void install_signal_handlers();
 
 /// Seconds since `start`.
 double seconds_since(std::chrono::steady_clock::time_point start);
+
+/// The file `file_name` of the source tree's scripts/ folder (plot and picture scripts).
+std::string script_path(const std::string& file_name);
+
+/// Why the scripts cannot draw (one line: no interpreter, or no matplotlib), empty when they can.
+/// The interpreter is $MESH_REPAIR_PYTHON, else Debian's /usr/bin/python3, which has
+/// python3-matplotlib even when another python3 comes first in PATH, else python3 of PATH.
+/// Checked once per run.
+std::string plotting_unavailable();
+
+/// Runs `script` with that interpreter and `args` (no shell: any character in a path is safe);
+/// its exit status, or -1 when it could not be started or was killed.
+int run_python_script(const std::string& script, const std::vector<std::string>& args);
 
 }  // namespace mesh_repair_cli
 

@@ -131,6 +131,21 @@ Hole_fill_metrics measure_filled_hole(
   return m;
 }
 
+/// The distance from each of `points` to the truth of `hole`: the removed patch, or
+/// `exact_distance` (unsigned distance to the true surface) when given; the distance the E norms
+/// of `measure_filled_hole` integrate, for pictures of a fill coloured by its error.
+template <class PolygonMesh, class Point>
+std::vector<double> distances_to_truth(
+    const Punched_hole<PolygonMesh, Point>& hole, const std::vector<Point>& points,
+    const std::function<double(const Point&)>& exact_distance = {}) {
+  const internal::hole_benchmark::Truth_distance<Point> distance(hole.removed_patch,
+                                                                 exact_distance);
+  std::vector<double> distances;
+  distances.reserve(points.size());
+  for (const Point& p : points) distances.push_back(distance(p));
+  return distances;
+}
+
 /// For each patch of `patches` (face sets, one per hole), the number of pairs of intersecting
 /// faces of `pm` with at least one face in that patch (CGAL's exact self-intersection test over
 /// the whole mesh, so a patch poking through a distant part of the surface counts too).
