@@ -35,7 +35,7 @@ if [[ "${1:-}" == "--self-validation" ]]; then
     done
     out=$root/bench-out/self-validation-$suite
     "$tool" bench holes --holes 3 --radius 0.05,0.12 --seeds "$seeds" --methods "$methods" \
-      --out "$out" --no-plots --quiet "${meshes[@]}"
+      --out "$out" --no-plots --no-pictures --quiet "${meshes[@]}"
     echo "### $suite suite ($names; seeds $seeds)"
     /usr/bin/env python3 "$root/scripts/compare_fills.py" "$out/results.jsonl"
     sed -n '/^Medians over the/,/^Holes not closed/p' "$out/table.md" | sed '$d'
@@ -55,7 +55,7 @@ if [[ "${1:-}" == "--held-out" ]]; then
     [[ $shape == jagged ]] && seeds=1,2,3
     out=$root/bench-out/held-out-$shape
     "$tool" bench holes --shape "$shape" --holes 3 --radius 0.05,0.12 --seeds "$seeds" \
-      --methods "$methods" --out "$out" --no-plots --quiet "${meshes[@]}"
+      --methods "$methods" --out "$out" --no-plots --no-pictures --quiet "${meshes[@]}"
     echo "### held-out, $shape holes, seeds $seeds"
     sed -n '/^Medians over the/,/^Holes not closed/p' "$out/table.md" | sed '$d'
     /usr/bin/env python3 "$root/scripts/bench_growth.py" "$out/results.jsonl"

@@ -342,17 +342,17 @@ class Hole_pictures {
 
   // The panel of `method` for each hole: its patch in `filled`, coloured by distance to the truth.
   void add_method(const Mesh& filled, const std::vector<std::vector<Mesh::Face_index>>& patches,
-                  const std::string& method, const Row* rows) {
+                  const Method& method, const Row* rows) {
     for (std::size_t i = 0; i < views_.size(); ++i) {
-      Picture_panel panel = method_panel(filled, i, patches[i], rows[i]);
+      const Row& row = rows[i];
+      Picture_panel panel = method_panel(filled, i, patches[i], row);
       View& view = views_[i];
-      const bool clean = rows[i].closed && !rows[i].self_intersecting;
+      double& top = row.closed && !row.self_intersecting ? view.clean_max : view.any_max;
       for (double v : panel.values)
-        if (std::isfinite(v))
-          (clean ? view.clean_max : view.any_max) =
-              std::max(clean ? view.clean_max : view.any_max, v);
-      panel.title =
-          method + (rows[i].used != method && rows[i].filled ? " (" + rows[i].used + ")" : "");
+        if (std::isfinite(v)) top = std::max(top, v);
+      // The method kept when it is not the one asked for (self_validated's choice, fallbacks).
+      const bool other = row.filled && row.used != MR::to_string(method.method);
+      panel.title = method.name + (other ? " (" + row.used + ")" : "");
       view.scene.panels.push_back(std::move(panel));
     }
   }
@@ -402,8 +402,10 @@ class Hole_pictures {
     Panel_builder builder(panel);
     const std::vector<Mesh::Face_index> truth_faces(truth.faces().begin(), truth.faces().end());
     const std::vector<double> values = face_distances(truth, truth_faces, hole);
-    for (std::size_t k = 0; k < truth_faces.size(); ++k)
+    for (std::size_t k = 0; k < truth_faces.size(); ++k) {
       builder.add_face(truth, truth_faces[k], values[k]);
+      view.clean_max = std::max(view.clean_max, values[k]);  // analytic: the faceting error
+    }
     add_surroundings(builder, holed, view);
     panel.title = "truth";
     panel.subtitle = "the removed faces";
@@ -453,7 +455,7 @@ class Hole_pictures {
   static void set_scale(View& view) {
     const double top = view.clean_max > 0 ? view.clean_max : view.any_max;
     view.scene.scale_max = top > 0 ? top : 1e-6;
-    view.scene.scale_clipped = view.any_max > view.scene.scale_max;
+    view.scene.scale_clipped = std::max(view.any_max, view.clean_max) > view.scene.scale_max;
   }
 
   const std::vector<Hole>& holes_;
@@ -499,7 +501,7 @@ void run_method(const Mesh& holed, const std::vector<Hole>& holes, const Case_co
     write_row(jsonl, context, options, radius, seed, i, holes[i], method, reports[i], m,
               mesh_closed, mesh_valid, rows.back());
   }
-  if (pictures) pictures->add_method(mesh, patches, method.name, &rows[rows.size() - holes.size()]);
+  if (pictures) pictures->add_method(mesh, patches, method, &rows[rows.size() - holes.size()]);
 }
 
 Mesh load_case(const Bench_case& c, Case_context& context) {
