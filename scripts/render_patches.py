@@ -34,7 +34,9 @@ import sys
 SURROUNDINGS = (0.74, 0.77, 0.82)  # blue-grey: tells the kept surface from any patch colour
 CATEGORY_COLOURS = ["#4c72b0", "#dd8452", "#55a868", "#c44e52", "#8172b3", "#937860",
                     "#da8bc3", "#8c8c8c", "#ccb974", "#64b5cd"]
-DISTANCE_MAP = "YlOrRd"  # light at 0 (shading stays visible), dark red at the scale's maximum
+# Light at 0 (shading stays visible), dark red at the scale's maximum, in ten steps: a face's
+# band is read off the colour bar, and matched across panels, more surely than a shade.
+DISTANCE_MAP, DISTANCE_STEPS = "YlOrRd", 10
 
 
 def normalised(v):
@@ -135,9 +137,12 @@ def render(scene, out_path, plt, colour_map):
         draw_panel(axes, panel, scene, light_direction(elevation, azimuth), colour_map)
         for k_axis, setter in enumerate((axes.set_xlim, axes.set_ylim, axes.set_zlim)):
             setter(centre[k_axis] - half, centre[k_axis] + half)
-        axes.set_box_aspect((1, 1, 1), zoom=1.45)
+        axes.set_box_aspect((1, 1, 1), zoom=1.5)
         axes.set_axis_off()
         all_axes.append(axes)
+    height = 2.6 * rows + 0.9
+    figure.subplots_adjust(left=0.01, right=0.99, top=1 - 0.55 / height, bottom=0.8 / height,
+                           wspace=0.02, hspace=0.15)
     figure.suptitle(scene.get("title", ""), fontsize=9)
     if scene["mode"] == "category":
         handles = [Patch(facecolor=CATEGORY_COLOURS[i % len(CATEGORY_COLOURS)], label=name)
@@ -152,9 +157,23 @@ def render(scene, out_path, plt, colour_map):
                               extend="max" if scene.get("scale_clipped") else "neither")
         bar.set_label(scene.get("scale_label", ""), fontsize=8)
         bar.ax.tick_params(labelsize=7)
-    temporary = out_path + ".tmp-%d.png" % os.getpid()
-    figure.savefig(temporary)
+    save_png(figure, out_path)
     plt.close(figure)
+
+
+def save_png(figure, out_path):
+    """Writes a temporary file renamed over `out_path`. With 256 colours (Pillow, which
+    python3-matplotlib depends on) a picture takes a third of the bytes and looks the same."""
+    temporary = out_path + ".tmp-%d.png" % os.getpid()
+    try:
+        import io
+        from PIL import Image
+        buffer = io.BytesIO()
+        figure.savefig(buffer, format="png")
+        buffer.seek(0)
+        Image.open(buffer).convert("RGB").quantize(256).save(temporary, optimize=True)
+    except ImportError:
+        figure.savefig(temporary, format="png")
     os.replace(temporary, out_path)
 
 
@@ -176,7 +195,7 @@ def main(args):
         print("render_patches.py: python3-matplotlib is missing, no pictures "
               "(Debian: scripts/setup.sh --with-plots)", file=sys.stderr)
         return 3
-    colour_map = matplotlib.colormaps[DISTANCE_MAP]
+    colour_map = matplotlib.colormaps[DISTANCE_MAP].resampled(DISTANCE_STEPS)
     failed = 0
     for scene_path, out_path in zip(args[0::2], args[1::2]):
         try:

@@ -30,12 +30,12 @@ std::string read_text(const fs::path& path) {
   return text.str();
 }
 
-struct Run {
+struct Tool_run {
   int status;
   std::string out, err;
 };
 
-Run run_tool(const std::string& arguments, const std::string& environment = "") {
+Tool_run run_tool(const std::string& arguments, const std::string& environment = "") {
   const fs::path out = scratch("stdout.txt"), err = scratch("stderr.txt");
   const std::string command = environment + " timeout 600 " + MESH_REPAIR_CLI + " " + arguments +
                               " >" + out.string() + " 2>" + err.string();
@@ -98,8 +98,8 @@ std::size_t files_ending_in(const fs::path& folder, const std::string& suffix) {
 TEST(PicturesCli, FillPictureIsAPngAndLeavesNoSceneFile) {
   const fs::path input = sphere_with_hole(), output = scratch("filled.off");
   const fs::path picture = scratch("fill.png");
-  const Run run = run_tool("fill " + input.string() + " -o " + output.string() +
-                           " --method liepa --picture " + picture.string() + " --quiet");
+  const Tool_run run = run_tool("fill " + input.string() + " -o " + output.string() +
+                                " --method liepa --picture " + picture.string() + " --quiet");
   ASSERT_EQ(run.status, 0) << run.out << run.err;
   EXPECT_TRUE(fs::exists(output));
   EXPECT_EQ(files_ending_in(scratch(""), ".json"), 0u) << "the scene file is removed";
@@ -110,7 +110,7 @@ TEST(PicturesCli, FillPictureIsAPngAndLeavesNoSceneFile) {
 
 TEST(PicturesCli, BenchWritesOnePngPerHoleAndAPageShowingThem) {
   const fs::path out = scratch("bench");
-  const Run run = run_tool(
+  const Tool_run run = run_tool(
       "bench holes --analytic sphere --holes 2 --radius 0.06 --seeds 1 "
       "--methods liepa_c1,advancing_front --no-plots --quiet --out " +
       out.string());
@@ -129,9 +129,9 @@ TEST(PicturesCli, BenchWritesOnePngPerHoleAndAPageShowingThem) {
 TEST(PicturesCli, WithoutMatplotlibOneLineSaysSoAndTheFillSucceeds) {
   const fs::path input = sphere_with_hole(), output = scratch("filled_no_python.off");
   const fs::path picture = scratch("no_python.png");
-  const Run run = run_tool("fill " + input.string() + " -o " + output.string() +
-                               " --method liepa --picture " + picture.string() + " --quiet",
-                           "MESH_REPAIR_PYTHON=/nonexistent/python3");
+  const Tool_run run = run_tool("fill " + input.string() + " -o " + output.string() +
+                                    " --method liepa --picture " + picture.string() + " --quiet",
+                                "MESH_REPAIR_PYTHON=/nonexistent/python3");
   EXPECT_EQ(run.status, 0) << run.err;
   EXPECT_TRUE(fs::exists(output));
   EXPECT_FALSE(fs::exists(picture));
@@ -141,8 +141,8 @@ TEST(PicturesCli, WithoutMatplotlibOneLineSaysSoAndTheFillSucceeds) {
 
 TEST(PicturesCli, PictureThatIsNotPngIsBadUsage) {
   const fs::path input = sphere_with_hole();
-  const Run run = run_tool("fill " + input.string() + " -o " + scratch("x.off").string() +
-                           " --picture " + scratch("x.jpg").string());
+  const Tool_run run = run_tool("fill " + input.string() + " -o " + scratch("x.off").string() +
+                                " --picture " + scratch("x.jpg").string());
   EXPECT_EQ(run.status, 2) << run.err;
   EXPECT_FALSE(fs::exists(scratch("x.off")));
 }

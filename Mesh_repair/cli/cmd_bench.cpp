@@ -310,6 +310,7 @@ void write_row(std::ostream& out, const Case_context& context, const Options& op
 // --- pictures --------------------------------------------------------------------------------
 
 std::string format(double value);
+double median(std::vector<double> values);
 
 // A name safe in a file name and in HTML.
 std::string file_name_part(const std::string& text) {
@@ -347,9 +348,10 @@ class Hole_pictures {
       const Row& row = rows[i];
       Picture_panel panel = method_panel(filled, i, patches[i], row);
       View& view = views_[i];
-      double& top = row.closed && !row.self_intersecting ? view.clean_max : view.any_max;
+      double farthest = 0;
       for (double v : panel.values)
-        if (std::isfinite(v)) top = std::max(top, v);
+        if (std::isfinite(v)) farthest = std::max(farthest, v);
+      (row.closed && !row.self_intersecting ? view.clean : view.other).push_back(farthest);
       // The method kept when it is not the one asked for (self_validated's choice, fallbacks).
       const bool other = row.filled && row.used != MR::to_string(method.method);
       panel.title = method.name + (other ? " (" + row.used + ")" : "");
@@ -378,7 +380,8 @@ class Hole_pictures {
     std::vector<Mesh::Face_index> around;
     std::vector<std::vector<Mesh::Vertex_index>> borders;
     Picture_scene scene;
-    double clean_max = 0, any_max = 0;
+    double truth_max = 0;
+    std::vector<double> clean, other;  // each method's farthest face: clean patches, the rest
   };
 
   View truth_view(const Mesh& holed, std::size_t i) {
@@ -404,7 +407,7 @@ class Hole_pictures {
     const std::vector<double> values = face_distances(truth, truth_faces, hole);
     for (std::size_t k = 0; k < truth_faces.size(); ++k) {
       builder.add_face(truth, truth_faces[k], values[k]);
-      view.clean_max = std::max(view.clean_max, values[k]);  // analytic: the faceting error
+      view.truth_max = std::max(view.truth_max, values[k]);  // analytic: the faceting error
     }
     add_surroundings(builder, holed, view);
     panel.title = "truth";
@@ -449,13 +452,19 @@ class Hole_pictures {
     return d;
   }
 
-  // One scale for every method of the hole, up to the largest distance among the patches that
-  // closed it cleanly: a failed patch far off would otherwise wash out every other panel. Larger
-  // distances are drawn in the top colour (the colour bar then ends in an arrow).
+  // One scale for every method of the hole, up to the farthest face of the patches that closed it
+  // cleanly, leaving out those more than four times the median of them: one bad patch would
+  // otherwise wash out every other panel (on the sphere, CGAL's C0 membrane is 20 times farther
+  // than the faired fills). Farther faces take the top colour; the colour bar ends in an arrow.
   static void set_scale(View& view) {
-    const double top = view.clean_max > 0 ? view.clean_max : view.any_max;
+    const std::vector<double>& maxima = view.clean.empty() ? view.other : view.clean;
+    const double typical = median(maxima);
+    double top = view.truth_max;
+    for (double m : maxima)
+      if (m <= 4 * typical) top = std::max(top, m);
     view.scene.scale_max = top > 0 ? top : 1e-6;
-    view.scene.scale_clipped = std::max(view.any_max, view.clean_max) > view.scene.scale_max;
+    for (const auto* list : {&view.clean, &view.other})
+      for (double m : *list) view.scene.scale_clipped |= m > view.scene.scale_max;
   }
 
   const std::vector<Hole>& holes_;
