@@ -69,7 +69,7 @@ def shade(triangle, light):
     w = [c[i] - a[i] for i in range(3)]
     n = normalised([u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2],
                     u[0] * w[1] - u[1] * w[0]])
-    return 0.35 + 0.65 * abs(sum(n[i] * light[i] for i in range(3)))
+    return 0.45 + 0.55 * abs(sum(n[i] * light[i] for i in range(3)))
 
 
 def base_colour(value, scene, colour_map):
@@ -124,9 +124,9 @@ def render(scene, out_path, plt, colour_map):
     from matplotlib.patches import Patch
     panels = scene["panels"]
     rows, cols = grid_shape(len(panels))
-    figure = plt.figure(figsize=(2.6 * cols, 2.6 * rows + 0.9), dpi=100)
+    height = 2.6 * rows + 0.95  # inches: the panels, the title above, the scale or legend below
+    figure = plt.figure(figsize=(2.6 * cols, height), dpi=100)
     shared_frame = bounds([p for p in panels if "normal" not in p] or panels)
-    all_axes = []
     for k, panel in enumerate(panels):
         elevation, azimuth = camera_angles(panel.get("normal", scene["normal"]))
         centre, half = bounds([panel]) if "normal" in panel else shared_frame
@@ -139,21 +139,19 @@ def render(scene, out_path, plt, colour_map):
             setter(centre[k_axis] - half, centre[k_axis] + half)
         axes.set_box_aspect((1, 1, 1), zoom=1.5)
         axes.set_axis_off()
-        all_axes.append(axes)
-    height = 2.6 * rows + 0.9
-    figure.subplots_adjust(left=0.01, right=0.99, top=1 - 0.55 / height, bottom=0.8 / height,
+    figure.subplots_adjust(left=0.01, right=0.99, top=1 - 0.55 / height, bottom=0.75 / height,
                            wspace=0.02, hspace=0.15)
     figure.suptitle(scene.get("title", ""), fontsize=9)
     if scene["mode"] == "category":
         handles = [Patch(facecolor=CATEGORY_COLOURS[i % len(CATEGORY_COLOURS)], label=name)
                    for i, name in enumerate(scene.get("legend", []))]
         handles.append(Patch(facecolor=SURROUNDINGS, label="surroundings (kept)"))
-        figure.legend(handles=handles, loc="lower center", ncol=min(len(handles), 5), fontsize=8,
-                      frameon=False)
+        figure.legend(handles=handles, loc="lower center", bbox_to_anchor=(0.5, 0.1 / height),
+                      ncol=min(len(handles), 5), fontsize=8, frameon=False)
     else:
         mappable = ScalarMappable(Normalize(0, scene.get("scale_max") or 1.0), colour_map)
-        bar = figure.colorbar(mappable, ax=all_axes, orientation="horizontal", fraction=0.05,
-                              pad=0.03, aspect=40, shrink=0.6,
+        bar_axes = figure.add_axes([0.2, 0.42 / height, 0.6, 0.14 / height])
+        bar = figure.colorbar(mappable, cax=bar_axes, orientation="horizontal",
                               extend="max" if scene.get("scale_clipped") else "neither")
         bar.set_label(scene.get("scale_label", ""), fontsize=8)
         bar.ax.tick_params(labelsize=7)

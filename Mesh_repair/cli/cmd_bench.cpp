@@ -794,16 +794,18 @@ std::string pictures_page(const std::vector<Picture_entry>& entries, const std::
   std::ostringstream out;
   out << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>bench holes</title>\n"
          "<style>body{font-family:sans-serif;font-size:14px} .hole{display:flex;flex-wrap:wrap;"
-         "gap:1em;align-items:flex-start} img{max-width:100%} table{border-collapse:collapse} "
+         "gap:1em;align-items:flex-start} .hole a{flex:1 1 480px} img{max-width:100%} "
+         "table{border-collapse:collapse} "
          "td,th{border:1px solid #ccc;padding:2px 6px;text-align:right} td:first-child,"
          "th:first-child{text-align:left}</style></head><body>\n";
   out << "<h1>Hole-filling benchmark</h1>\n<p><code>" << html(command) << "</code></p>\n"
       << "<p>Medians and worst cases: <a href=\"table.md\">table.md</a>; every measure: "
          "<a href=\"results.jsonl\">results.jsonl</a> (doc/bench_holes.md). In each picture the "
          "truth and every method's patch are coloured by the distance of each face's centre to "
-         "the truth over the bounding-box diagonal, on one scale per hole (up to the largest "
-         "distance of the patches that closed the hole cleanly); grey: the surface kept around "
-         "the hole; black: the hole's border.</p>\n";
+         "the truth over the bounding-box diagonal, on one scale per hole (up to the farthest "
+         "face of the patches that closed the hole cleanly, but for those more than four times "
+         "the median of them, which saturate); grey: the surface kept around the hole; black: "
+         "the hole's border.</p>\n";
   for (const Picture_entry& entry : entries) {
     out << "<h3>" << html(entry.title) << "</h3>\n<div class=\"hole\">\n";
     hole_table(out, entry, rows);
