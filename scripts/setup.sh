@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages Mesh_repair needs, only those that are missing.
 # Usage: scripts/setup.sh [--with-plots] [--with-format] [--with-python] [--with-fuzz]
-#   --with-plots   adds python3-matplotlib for the bench plots
+#   --with-plots   adds python3-matplotlib for the bench plots and the pictures of filled holes
 #   --with-format  adds clang-format for scripts/check_format.sh (CI)
 #   --with-python  adds pybind11-dev, python3-numpy and python3-pytest for python/ and its tests
 #   --with-fuzz    adds clang-14 and libclang-rt-14-dev for the libFuzzer targets (scripts/fuzz.sh)

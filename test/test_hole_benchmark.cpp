@@ -193,7 +193,7 @@ TEST(HoleBenchmarkCli, SphereWithLiepaWritesOneResultLinePerHoleMethodAndSeed) {
   const std::string out = std::string(::testing::TempDir()) + "bench_holes_cli";
   const std::string command = std::string(MESH_REPAIR_CLI) +
                               " bench holes --analytic sphere --holes 2 --radius 0.05 --seeds "
-                              "1,2 --methods liepa --no-plots --quiet --out " +
+                              "1,2 --methods liepa --no-plots --no-pictures --quiet --out " +
                               out;
   ASSERT_EQ(std::system(command.c_str()), 0) << command;
   std::ifstream results(out + "/results.jsonl");
