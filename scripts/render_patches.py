@@ -30,6 +30,7 @@ import json
 import math
 import os
 import sys
+import textwrap
 
 SURROUNDINGS = (0.74, 0.77, 0.82)  # blue-grey: tells the kept surface from any patch colour
 CATEGORY_COLOURS = ["#4c72b0", "#dd8452", "#55a868", "#c44e52", "#8172b3", "#937860",
@@ -109,8 +110,11 @@ def draw_panel(axes, panel, scene, light, colour_map):
                      for k in range(len(loop))]
     if segments:
         axes.add_collection3d(Line3DCollection(segments, colors="black", linewidths=1.4))
-    title = panel["title"] + ("\n" + panel["subtitle"] if panel.get("subtitle") else "")
-    axes.set_title(title, fontsize=8)
+    axes.set_title("\n".join(title_lines(panel)), fontsize=8)
+
+
+def title_lines(panel):
+    return ([panel["title"]] + textwrap.wrap(panel.get("subtitle", ""), 40))[:3]
 
 
 def grid_shape(n):
@@ -124,8 +128,10 @@ def render(scene, out_path, plt, colour_map):
     from matplotlib.patches import Patch
     panels = scene["panels"]
     rows, cols = grid_shape(len(panels))
-    height = 2.6 * rows + 0.95  # inches: the panels, the title above, the scale or legend below
-    figure = plt.figure(figsize=(2.6 * cols, height), dpi=100)
+    # Inches: the figure's title and the panels' titles above, the scale or legend below.
+    top = 0.3 + 0.13 * max(len(title_lines(p)) for p in panels)
+    height = 2.6 * rows + top + 0.75
+    figure = plt.figure(figsize=(max(2.6 * cols, 4.4), height), dpi=100)
     shared_frame = bounds([p for p in panels if "normal" not in p] or panels)
     for k, panel in enumerate(panels):
         elevation, azimuth = camera_angles(panel.get("normal", scene["normal"]))
@@ -139,7 +145,7 @@ def render(scene, out_path, plt, colour_map):
             setter(centre[k_axis] - half, centre[k_axis] + half)
         axes.set_box_aspect((1, 1, 1), zoom=1.5)
         axes.set_axis_off()
-    figure.subplots_adjust(left=0.01, right=0.99, top=1 - 0.55 / height, bottom=0.75 / height,
+    figure.subplots_adjust(left=0.01, right=0.99, top=1 - top / height, bottom=0.75 / height,
                            wspace=0.02, hspace=0.15)
     figure.suptitle(scene.get("title", ""), fontsize=9)
     if scene["mode"] == "category":

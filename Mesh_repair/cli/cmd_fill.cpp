@@ -226,7 +226,7 @@ Picture_panel hole_panel(const Mesh& mesh, const Shown_hole& hole,
                 " border edges";
   panel.subtitle = report.filled ? std::string(CGAL::Mesh_repair::to_string(report.used)) + ", " +
                                        std::to_string(report.faces_created) + " faces"
-                                 : "left open: " + shorten(report.failure, 40);
+                                 : "left open: " + shorten(report.failure, 80);
   return panel;
 }
 
@@ -235,6 +235,7 @@ Picture_scene fill_scene(const std::string& input, const Mesh& mesh,
                          const std::vector<CGAL::Mesh_repair::Fill_patch<Mesh>>& patches) {
   std::vector<Shown_hole> holes = filled_holes(mesh, result, patches);
   Picture_scene scene;
+  scene.by_category = true;
   const auto category = faces_by_method(result, holes, scene.legend);
   const std::vector<Shown_hole> open = open_holes(mesh, result);
   holes.insert(holes.end(), open.begin(), open.end());
@@ -249,7 +250,6 @@ Picture_scene fill_scene(const std::string& input, const Mesh& mesh,
       std::filesystem::path(input).filename().string() + ": " + std::to_string(result.filled) +
       " hole(s) filled, " + std::to_string(result.failed) + " left open" +
       (total > holes.size() ? "; the " + std::to_string(holes.size()) + " largest shown" : "");
-  if (scene.legend.empty()) scene.legend.push_back("(no patch)");
   return scene;
 }
 

@@ -139,8 +139,8 @@ std::string scene_json(const Picture_scene& scene) {
   json.begin_object();
   json.field("title", scene.title);
   json.key("normal").raw(numbers({scene.normal.begin(), scene.normal.end()}, "%.6g"));
-  json.field("mode", scene.legend.empty() ? "distance" : "category");
-  if (scene.legend.empty()) {
+  json.field("mode", scene.by_category ? "category" : "distance");
+  if (!scene.by_category) {
     json.field("scale_label", scene.scale_label).field("scale_max", scene.scale_max);
     json.field("scale_clipped", scene.scale_clipped);
   } else {

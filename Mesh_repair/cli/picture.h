@@ -29,11 +29,12 @@ struct Picture_panel {
   std::array<double, 3> normal{};  ///< own camera direction when not zero (else the scene's)
 };
 
-/// One picture: panels side by side. `legend` empty: values are distances drawn on one colour
-/// scale up to `scale_max` (larger ones in its top colour); else values index `legend`.
+/// One picture: panels side by side. Values are distances drawn on one colour scale up to
+/// `scale_max` (larger ones in its top colour), or, `by_category`, indices into `legend`.
 struct Picture_scene {
   std::string title;
   std::array<double, 3> normal{0, 0, 1};
+  bool by_category = false;
   std::string scale_label;
   double scale_max = 0;
   bool scale_clipped = false;  ///< some value is above `scale_max`
