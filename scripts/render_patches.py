@@ -101,8 +101,10 @@ def draw_panel(axes, panel, scene, light, colour_map):
     for triangle, value in zip(tris, panel["values"]):
         s = shade(triangle, light)
         colours.append([c * s for c in base_colour(value, scene, colour_map)])
-    # One collection for every face: mplot3d sorts depth within a collection only.
-    axes.add_collection3d(Poly3DCollection(tris, facecolors=colours, edgecolors=(0, 0, 0, 0.18),
+    # One collection for every face: mplot3d sorts depth within a collection only. Edges show
+    # each method's triangulation; past a few thousand faces they would only darken the panel.
+    edges = (0, 0, 0, 0.18) if len(tris) <= 4000 else "face"
+    axes.add_collection3d(Poly3DCollection(tris, facecolors=colours, edgecolors=edges,
                                            linewidths=0.25))
     segments = []
     for loop in panel.get("borders", []):

@@ -139,6 +139,23 @@ TEST(PicturesCli, WithoutMatplotlibOneLineSaysSoAndTheFillSucceeds) {
   EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
 }
 
+TEST(PicturesCli, WithoutMatplotlibBenchKeepsTheScenesToDrawLater) {
+  const fs::path out = scratch("bench_no_python");
+  const Tool_run run = run_tool(
+      "bench holes --analytic sphere --holes 1 --radius 0.06 --seeds 1 "
+      "--methods liepa_c1 --quiet --out " +
+          out.string(),
+      "MESH_REPAIR_PYTHON=/nonexistent/python3");
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_TRUE(fs::exists(out / "table.md"));
+  EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+  EXPECT_NE(run.err.find("no plots and no pictures"), std::string::npos) << run.err;
+  EXPECT_TRUE(fs::exists(out / "pictures" / "sphere-r0.06-s1-h0.json"));
+  EXPECT_EQ(files_ending_in(out / "pictures", ".png"), 0u);
+  EXPECT_NE(read_text(out / "index.html").find("no picture"), std::string::npos);
+  fs::remove_all(out);
+}
+
 TEST(PicturesCli, PictureThatIsNotPngIsBadUsage) {
   const fs::path input = sphere_with_hole();
   const Tool_run run = run_tool("fill " + input.string() + " -o " + scratch("x.off").string() +
