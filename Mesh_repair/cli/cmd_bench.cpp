@@ -3,7 +3,7 @@
 // mesh_repair bench holes: the ground-truth hole-filling benchmark (doc/bench_holes.md). Punches
 // holes with hole_benchmark.h, fills them with every requested method through the same
 // dispatcher, measures each fill against the removed patch (or the exact surface) and writes
-// results.jsonl, table.md and plots.
+// results.jsonl, table.md, plots, and a picture of every hole with a page showing them.
 #include "commands.h"
 #include "common.h"
 #include "picture.h"
@@ -22,7 +22,6 @@
 #include <iostream>
 #include <map>
 #include <memory>
-#include <set>
 #include <sstream>
 #include <tuple>
 
@@ -825,7 +824,14 @@ std::string pictures_page(const std::vector<Picture_entry>& entries, const std::
 void draw(const Options& options, const std::vector<std::pair<std::string, std::string>>& jobs) {
   const std::string unavailable = plotting_unavailable();
   if (!unavailable.empty()) {
-    std::cerr << "mesh_repair bench: no plots and no pictures: " << unavailable << '\n';
+    const char* what = !options.pictures ? "no plots"
+                       : options.plots   ? "no plots and no pictures"
+                                         : "no pictures";
+    std::cerr << "mesh_repair bench: " << what << ": " << unavailable
+              << (jobs.empty() ? ""
+                               : "; the pictures' scenes are kept in " + options.out +
+                                     "/pictures (scripts/render_patches.py draws them)")
+              << '\n';
     return;
   }
   if (options.plots) make_plots(options);

@@ -253,14 +253,20 @@ Picture_scene fill_scene(const std::string& input, const Mesh& mesh,
   return scene;
 }
 
-// Writes the scene beside the picture, renders it, removes the scene.
+// Writes the scene beside the picture, renders it, removes the scene. The mesh is written by
+// then: a picture that cannot be made is one line, not a failure of the fill.
 void write_fill_picture(const std::string& picture, const Picture_scene& scene) {
   if (scene.panels.empty()) {
     std::cerr << "mesh_repair fill: no picture: no hole was filled or left open\n";
     return;
   }
   const std::string scene_file = picture + ".scene-" + std::to_string(::getpid()) + ".json";
-  save_text(scene_file, scene_json(scene));
+  try {
+    save_text(scene_file, scene_json(scene));
+  } catch (const Input_error& e) {
+    std::cerr << "mesh_repair fill: no picture: " << e.what() << '\n';
+    return;
+  }
   render_pictures({{scene_file, picture}}, "mesh_repair fill");
   std::error_code ignored;
   std::filesystem::remove(scene_file, ignored);
