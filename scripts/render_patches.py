@@ -103,7 +103,7 @@ def draw_panel(axes, panel, scene, light, colour_map):
         colours.append([c * s for c in base_colour(value, scene, colour_map)])
     # One collection for every face: mplot3d sorts depth within a collection only. Edges show
     # each method's triangulation; past a few thousand faces they would only darken the panel.
-    edges = (0, 0, 0, 0.18) if len(tris) <= 4000 else "face"
+    edges = (0, 0, 0, 0.18) if len(tris) <= 4000 else "none"
     axes.add_collection3d(Poly3DCollection(tris, facecolors=colours, edgecolors=edges,
                                            linewidths=0.25))
     segments = []
@@ -207,8 +207,9 @@ def main(args):
         try:
             with open(scene_path) as stream:
                 render(json.load(stream), out_path, plt, colour_map)
-        except (OSError, ValueError, KeyError) as error:
-            print("render_patches.py: %s: %s" % (scene_path, error), file=sys.stderr)
+        except Exception as error:  # one bad scene must not cost the other pictures
+            print("render_patches.py: %s: %s: %s" % (scene_path, type(error).__name__, error),
+                  file=sys.stderr)
             failed += 1
     return 1 if failed else 0
 
