@@ -131,7 +131,7 @@ def render(scene, out_path, plt, colour_map):
     panels = scene["panels"]
     rows, cols = grid_shape(len(panels))
     # Inches: the figure's title and the panels' titles above, the scale or legend below.
-    top = 0.3 + 0.13 * max(len(title_lines(p)) for p in panels)
+    top = 0.42 + 0.13 * max(len(title_lines(p)) for p in panels)
     height = 2.6 * rows + top + 0.75
     figure = plt.figure(figsize=(max(2.6 * cols, 4.4), height), dpi=100)
     shared_frame = bounds([p for p in panels if "normal" not in p] or panels)
