@@ -13,6 +13,8 @@
 
 #include <gtest/gtest.h>
 
+#include "sliver_grid.h"
+
 #include <cmath>
 #include <set>
 #include <vector>
@@ -97,22 +99,6 @@ TEST(OptimizeMesh, PlanarGridReducesToFewTrianglesWithZeroHausdorffError) {
   EXPECT_EQ(there, 0.0);
   EXPECT_EQ(back, 0.0);
   EXPECT_NEAR(PMP::area(grid), 1.0, 1e-12);
-}
-
-// A planar parallelogram grid whose cells are split along their long diagonal: every triangle is
-// a sliver although the short diagonals would give good ones.
-Mesh sliver_grid(int n) {
-  Mesh mesh;
-  std::vector<Mesh::Vertex_index> v;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) v.push_back(mesh.add_vertex(Point(i + 0.85 * j, 0.25 * j, 0)));
-  auto at = [&](int i, int j) { return v[std::size_t(j) * (n + 1) + i]; };
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      mesh.add_face(at(i, j), at(i + 1, j), at(i + 1, j + 1));
-      mesh.add_face(at(i, j), at(i + 1, j + 1), at(i, j + 1));
-    }
-  return mesh;
 }
 
 TEST(OptimizeMesh, QualityModeRaisesMinimumAngleOfSliversAtConstantFaceCount) {

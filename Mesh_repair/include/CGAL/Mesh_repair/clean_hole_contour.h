@@ -232,8 +232,14 @@ class Contour_cleaner {
       ++result_.short_edges_left;
       return;
     }
-    // Collapse to one of the two extremities (Pernot 4.3): try the target, then the source.
-    for (const Point& position : {get(vpm_, target(b, pm_)), get(vpm_, source(b, pm_))}) {
+    // Collapse to one of the two extremities (Pernot 4.3). The removed extremity's other contour
+    // edge absorbs `b`, so remove the one whose other edge is the shorter: an edge split in two
+    // halves becomes one edge again after one collapse, instead of leaving its second half short
+    // and collapsing it too.
+    const Point at_source = get(vpm_, source(b, pm_)), at_target = get(vpm_, target(b, pm_));
+    const bool keep_source = length(next(b, pm_)) < length(prev(b, pm_));
+    for (const Point& position :
+         {keep_source ? at_source : at_target, keep_source ? at_target : at_source}) {
       const vertex_descriptor kept = guarded_collapse(pm_, vpm_, b, position);
       if (kept == GT::null_vertex()) continue;
       retarget(kept);

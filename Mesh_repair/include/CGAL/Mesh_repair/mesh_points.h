@@ -38,6 +38,57 @@ struct Mesh_points_result {
   bool cancelled = false;
 };
 
+namespace internal {
+
+/// The options of `mesh_points`, read once from the named parameters.
+struct Mesh_points_options {
+  double feature_angle_deg = default_smoothing_feature_angle_deg;
+  bool quads = false;
+  unsigned iterations = 3;
+  unsigned seed = 0;
+  int threads = 0;
+};
+
+/// `mesh_points` on plain options, templated on the point and mesh types only (compiled once in
+/// the core for Surface_mesh).
+template <class Point, class PolygonMesh>
+Mesh_points_result mesh_points_with_options(std::vector<Point> soup_points, PolygonMesh& pm,
+                                            const Mesh_points_options& options,
+                                            Any_visitor visitor) {
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  Mesh_points_result result;
+  result.points = soup_points.size();
+  clear(pm);
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<std::array<std::size_t, 3>> facets;
+  CGAL::advancing_front_surface_reconstruction(soup_points.begin(), soup_points.end(),
+                                               std::back_inserter(facets));
+  result.reconstructed_faces = facets.size();
+  if (facets.empty()) return result;
+  std::vector<std::vector<std::size_t>> polygons;
+  for (const auto& f : facets) polygons.push_back({f[0], f[1], f[2]});
+  PMP::repair_polygon_soup(soup_points, polygons);
+  PMP::orient_polygon_soup(soup_points, polygons);
+  PMP::polygon_soup_to_polygon_mesh(soup_points, polygons, pm);
+  result.reconstruction_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  const auto angle = parameters::feature_angle_deg(options.feature_angle_deg);
+  result.flips = flip_edges_for_quality(pm, angle);
+  if (options.quads) result.quads = triangles_to_quads(pm, angle);
+  if (options.iterations > 0) {
+    result.smoothing = mga_smooth(pm, angle.number_of_threads(options.threads)
+                                          .random_seed(options.seed)
+                                          .number_of_iterations(int(options.iterations))
+                                          .surface_tangent_scale(1.0)
+                                          .visitor(std::ref(visitor)));
+    result.cancelled = result.smoothing.cancelled;
+  }
+  return result;
+}
+
+}  // namespace internal
+
 /// Meshes `points` into `pm` (cleared first): advancing-front reconstruction (CGAL), soup
 /// repair and orientation (CGAL), quality edge flips, optional quad conversion, and MGA
 /// smoothing of the nodes on the G1 surface through the points (tangent scale 1, the paper's
@@ -66,51 +117,40 @@ Mesh_points_result mesh_points(const PointRange& points, PolygonMesh& pm,
                                const NamedParameters& np = parameters::default_values()) {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  namespace PMP = CGAL::Polygon_mesh_processing;
   using Point = typename PointRange::value_type;
-  const double feature_angle = choose_parameter(
+  internal::Mesh_points_options options;
+  options.feature_angle_deg = choose_parameter(
       get_parameter(np, internal_np::feature_angle_deg_t()), default_smoothing_feature_angle_deg);
-  const bool quads = choose_parameter(get_parameter(np, internal_np::convert_to_quads_t()), false);
-  const unsigned iterations =
+  options.quads = choose_parameter(get_parameter(np, internal_np::convert_to_quads_t()), false);
+  options.iterations =
       choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 3u);
-  const unsigned seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0u);
-  const int threads = choose_parameter(get_parameter(np, internal_np::number_of_threads_t()), 0);
+  options.seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0u);
+  options.threads = choose_parameter(get_parameter(np, internal_np::number_of_threads_t()), 0);
   internal::Visitor_parameter<NamedParameters> visitor(np);
-
-  Mesh_points_result result;
-  result.points = points.size();
-  clear(pm);
-  const auto start = std::chrono::steady_clock::now();
-  std::vector<Point> soup_points(points.begin(), points.end());
-  std::vector<std::array<std::size_t, 3>> facets;
-  CGAL::advancing_front_surface_reconstruction(soup_points.begin(), soup_points.end(),
-                                               std::back_inserter(facets));
-  result.reconstructed_faces = facets.size();
-  if (facets.empty()) return result;
-  std::vector<std::vector<std::size_t>> polygons;
-  for (const auto& f : facets) polygons.push_back({f[0], f[1], f[2]});
-  PMP::repair_polygon_soup(soup_points, polygons);
-  PMP::orient_polygon_soup(soup_points, polygons);
-  PMP::polygon_soup_to_polygon_mesh(soup_points, polygons, pm);
-  result.reconstruction_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-
-  const auto angle = parameters::feature_angle_deg(feature_angle);
-  result.flips = flip_edges_for_quality(pm, angle);
-  if (quads) result.quads = triangles_to_quads(pm, angle);
-  if (iterations > 0) {
-    Any_visitor any = visitor.get();
-    result.smoothing = mga_smooth(pm, angle.number_of_threads(threads)
-                                          .random_seed(seed)
-                                          .number_of_iterations(int(iterations))
-                                          .surface_tangent_scale(1.0)
-                                          .visitor(std::ref(any)));
-    result.cancelled = result.smoothing.cancelled;
-  }
-  return result;
+  return internal::mesh_points_with_options(std::vector<Point>(points.begin(), points.end()), pm,
+                                            options, visitor.get());
 }
 
 }  // namespace Mesh_repair
 }  // namespace CGAL
+
+// Compiled once in the core library (internal/compiled_core.h).
+#ifdef CGAL_MESH_REPAIR_COMPILED_CORE
+#include <CGAL/Mesh_repair/internal/compiled_core.h>
+namespace CGAL {
+namespace Mesh_repair {
+namespace internal {
+#ifndef CGAL_MESH_REPAIR_INSTANTIATE_MESH_POINTS
+extern
+#endif
+    template Mesh_points_result
+    mesh_points_with_options<Core_traits::Point_3, Core_mesh>(std::vector<Core_traits::Point_3>,
+                                                              Core_mesh&,
+                                                              const Mesh_points_options&,
+                                                              Any_visitor);
+}  // namespace internal
+}  // namespace Mesh_repair
+}  // namespace CGAL
+#endif
 
 #endif  // CGAL_MESH_REPAIR_MESH_POINTS_H

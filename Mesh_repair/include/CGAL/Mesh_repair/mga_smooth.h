@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <vector>
 
 namespace CGAL {
@@ -100,25 +101,20 @@ inline std::vector<std::array<int, 3>> primary_triangles(const Polygon_arrays& m
   return triangles;
 }
 
-template <class PolygonMesh, class NamedParameters>
-Mga_smooth_result smooth_with(PolygonMesh& pm, const NamedParameters& np,
-                              Node_optimizer optimizer) {
+/// Every option of `mga_smooth` but the mesh's maps, read once from the named parameters.
+struct Mga_smooth_options {
+  Node_smoothing_settings settings;
+  double feature_angle_deg = default_smoothing_feature_angle_deg;
+  double tangent_scale = default_surface_tangent_scale;
+  bool slide_feature_nodes = false;
+};
+
+template <class NamedParameters>
+Mga_smooth_options mga_smooth_options_from(const NamedParameters& np, Node_optimizer optimizer) {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  using GT = typename GetGeomTraits<PolygonMesh, NamedParameters>::type;
-  using vertex_descriptor = typename boost::graph_traits<PolygonMesh>::vertex_descriptor;
-  using Point = typename GT::Point_3;
-
-  const GT traits = choose_parameter<GT>(get_parameter(np, CGAL::internal_np::geom_traits));
-  auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                              get_property_map(CGAL::vertex_point, pm));
-  using Constrained_default = CGAL::Static_boolean_property_map<vertex_descriptor, false>;
-  auto constrained = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_is_constrained),
-                                      Constrained_default());
-  internal::Visitor_parameter<NamedParameters> visitor_parameter(np);
-  Any_visitor visitor = visitor_parameter.get();
-
-  Node_smoothing_settings settings;
+  Mga_smooth_options o;
+  Node_smoothing_settings& settings = o.settings;
   settings.optimizer = optimizer;
   settings.seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0u);
   settings.max_sweeps =
@@ -129,17 +125,34 @@ Mga_smooth_result smooth_with(PolygonMesh& pm, const NamedParameters& np,
       int(choose_parameter(get_parameter(np, internal_np::population_size_t()), 5));
   settings.ga.max_generations =
       int(choose_parameter(get_parameter(np, internal_np::max_generations_t()), 3));
-  const double feature_angle_deg = choose_parameter(
-      get_parameter(np, internal_np::feature_angle_deg_t()), default_smoothing_feature_angle_deg);
+  o.feature_angle_deg = choose_parameter(get_parameter(np, internal_np::feature_angle_deg_t()),
+                                         default_smoothing_feature_angle_deg);
   // `cubic_surface_weight` is the deprecated name of the same number (it blended a C0 cubic
   // surface with the flat triangles; the G1 surface shortens its tangents instead).
-  const double tangent_scale =
+  o.tangent_scale =
       choose_parameter(get_parameter(np, internal_np::surface_tangent_scale_t()),
                        choose_parameter(get_parameter(np, internal_np::cubic_surface_weight_t()),
                                         default_surface_tangent_scale));
-
-  const bool slide_feature_nodes =
+  o.slide_feature_nodes =
       choose_parameter(get_parameter(np, internal_np::slide_feature_nodes_t()), false);
+  return o;
+}
+
+/// The smoothing on plain options, templated on the mesh and its maps only (compiled once in the
+/// core for Surface_mesh): `constrained(v)` tells whether the user fixed vertex v.
+template <class PolygonMesh, class VertexPointMap, class GT>
+Mga_smooth_result smooth_with_options(
+    PolygonMesh& pm, VertexPointMap vpm, const GT& traits,
+    const std::function<bool(typename boost::graph_traits<PolygonMesh>::vertex_descriptor)>&
+        constrained,
+    const Mga_smooth_options& options, Any_visitor visitor) {
+  using vertex_descriptor = typename boost::graph_traits<PolygonMesh>::vertex_descriptor;
+  using Point = typename GT::Point_3;
+  const Node_smoothing_settings& settings = options.settings;
+  const Node_optimizer optimizer = settings.optimizer;
+  const double feature_angle_deg = options.feature_angle_deg;
+  const double tangent_scale = options.tangent_scale;
+  const bool slide_feature_nodes = options.slide_feature_nodes;
 
   // Index arrays of the mesh.
   visitor.start_step("G1 surface");
@@ -181,13 +194,13 @@ Mga_smooth_result smooth_with(PolygonMesh& pm, const NamedParameters& np,
     } else if (surface.is_border_vertex(int(v))) {
       fixed[v] = true, ++result.border_nodes;
     } else if (surface.is_feature_vertex(int(v))) {
-      if (slide_feature_nodes && !fixed[v] && !get(constrained, vertex_of[v]) &&
+      if (slide_feature_nodes && !fixed[v] && !constrained(vertex_of[v]) &&
           inside_feature_line(surface, int(v), feature_path[v])) {
         ++result.sliding_nodes;
       } else {
         fixed[v] = true, ++result.feature_nodes;
       }
-    } else if (fixed[v] || get(constrained, vertex_of[v])) {
+    } else if (fixed[v] || constrained(vertex_of[v])) {
       fixed[v] = true, ++result.constrained_nodes;
     } else {
       ++result.free_nodes;
@@ -214,6 +227,25 @@ Mga_smooth_result smooth_with(PolygonMesh& pm, const NamedParameters& np,
   result.converged = statistics.converged;
   result.cancelled = statistics.cancelled;
   return result;
+}
+
+template <class PolygonMesh, class NamedParameters>
+Mga_smooth_result smooth_with(PolygonMesh& pm, const NamedParameters& np,
+                              Node_optimizer optimizer) {
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using GT = typename GetGeomTraits<PolygonMesh, NamedParameters>::type;
+  using vertex_descriptor = typename boost::graph_traits<PolygonMesh>::vertex_descriptor;
+  const GT traits = choose_parameter<GT>(get_parameter(np, CGAL::internal_np::geom_traits));
+  auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                              get_property_map(CGAL::vertex_point, pm));
+  using Constrained_default = CGAL::Static_boolean_property_map<vertex_descriptor, false>;
+  auto constrained = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_is_constrained),
+                                      Constrained_default());
+  internal::Visitor_parameter<NamedParameters> visitor_parameter(np);
+  return smooth_with_options(
+      pm, vpm, traits, [constrained](vertex_descriptor v) { return bool(get(constrained, v)); },
+      mga_smooth_options_from(np, optimizer), visitor_parameter.get());
 }
 
 }  // namespace internal
@@ -298,5 +330,24 @@ Mga_smooth_result conjugate_gradient_smooth(
 
 }  // namespace Mesh_repair
 }  // namespace CGAL
+
+// Compiled once in the core library (internal/compiled_core.h).
+#ifdef CGAL_MESH_REPAIR_COMPILED_CORE
+#include <CGAL/Mesh_repair/internal/compiled_core.h>
+namespace CGAL {
+namespace Mesh_repair {
+namespace internal {
+#ifndef CGAL_MESH_REPAIR_INSTANTIATE_MGA_SMOOTH
+extern
+#endif
+    template Mga_smooth_result
+    smooth_with_options<Core_mesh, Core_vpm, Core_traits>(
+        Core_mesh&, Core_vpm, const Core_traits&,
+        const std::function<bool(boost::graph_traits<Core_mesh>::vertex_descriptor)>&,
+        const Mga_smooth_options&, Any_visitor);
+}  // namespace internal
+}  // namespace Mesh_repair
+}  // namespace CGAL
+#endif
 
 #endif  // CGAL_MESH_REPAIR_MGA_SMOOTH_H

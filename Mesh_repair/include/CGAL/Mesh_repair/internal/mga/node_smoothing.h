@@ -102,7 +102,9 @@ class Node_smoother {
     // and hand-over each time).
     // 0: TBB's default number of threads (every operator's default).
     if (settings.threads == 0)
-      arena_ = std::make_unique<tbb::task_arena>(tbb::task_arena::automatic);
+      // A copy: make_unique's forwarding reference would odr-use the constant, which TBB
+      // declares without a definition (an undefined symbol when built at -O0).
+      arena_ = std::make_unique<tbb::task_arena>(int(tbb::task_arena::automatic));
     else if (settings.threads > 1)
       arena_ = std::make_unique<tbb::task_arena>(settings.threads);
 #endif

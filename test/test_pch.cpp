@@ -1,0 +1,1 @@
+// The unit that compiles the suites' precompiled header (test/CMakeLists.txt).
