@@ -55,13 +55,15 @@ def repair_many(paths, out_dir, client=None, timeout=600, jobs=None, memory_limi
     memory_limit: bytes of address space per child (outcome "failed", note "out of memory").
     retry_failed: also run again the files a previous run left failed, crashed or timed out.
     python_executable: the interpreter of the children (default: the worker's own).
-    repair_options: passed to ``mesh_repair.repair`` (e.g. ``fill="liepa"``).
+    repair_options: passed to ``mesh_repair.repair`` (e.g. ``fill="liepa"``); ``threads``
+        defaults to 1 here: the parallelism is across files, one per worker thread.
     Outcomes: repaired, incomplete, failed, crashed, timeout, skipped (as the CLI's).
     """
     if not (isinstance(timeout, (int, float)) and timeout > 0):
         raise ValueError("timeout must be positive")
     if jobs is not None and (not isinstance(jobs, int) or jobs < 1):
         raise ValueError("jobs must be at least 1")
+    repair_options.setdefault("threads", 1)
     out_dir = os.path.abspath(os.fspath(out_dir))
     inputs = _inputs(paths, out_dir)
     os.makedirs(out_dir, exist_ok=True)
@@ -315,10 +317,18 @@ def _child_main(child):
         limit = int(child["memory_limit"])
         resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
     start = time.monotonic()
+    parent = os.getppid()
+
+    def stop_when_orphaned(step, fraction):
+        # The supervisor died with its Dask worker, and Dask runs the file elsewhere.
+        if os.getppid() != parent:
+            raise SystemExit(_EXIT_ERROR)
+
     try:
         import mesh_repair
 
-        result = mesh_repair.repair(child["input"], **child["options"])
+        result = mesh_repair.repair(child["input"], progress=stop_when_orphaned,
+                                    **child["options"])
         mesh_repair.write(child["output"], result.vertices, result.faces)
     except ValueError as error:
         print(f"mesh_repair: {error}", file=sys.stderr)

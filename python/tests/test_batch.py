@@ -100,3 +100,30 @@ def test_dask_local_cluster_of_two_workers(inputs, faulty_python, tmp_path):
                            python_executable=faulty_python)
         assert len(client.scheduler_info()["workers"]) == 2  # no worker died
     check_outcomes(rows, out_dir)
+
+
+def test_every_file_accounted_for_when_a_dask_worker_process_dies(tmp_path):
+    """A worker process killed in the middle of the batch (as the OOM killer would): Dask runs
+    its tasks again on the other worker; every file still gets its row."""
+    distributed = pytest.importorskip("distributed")
+    import threading
+
+    folder = tmp_path / "in"
+    folder.mkdir()
+    for k in range(6):
+        mesh_repair.write(folder / f"sphere{k}.off", *holed_sphere(4, holes=k % 3 + 1))
+    out_dir = tmp_path / "out"
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                  dashboard_address=None) as cluster, \
+            distributed.Client(cluster) as client:
+        victim = sorted(client.scheduler_info()["workers"])[0]
+        killer = threading.Timer(1.0, lambda: client.run(os._exit, 1, workers=[victim],
+                                                         wait=False))
+        killer.start()
+        rows = repair_many(folder, out_dir, client=client, timeout=120)
+        killer.join()
+    assert sorted(r["file"] for r in rows) == [f"sphere{k}.off" for k in range(6)]
+    assert all(r["outcome"] in ("repaired", "crashed") for r in rows)
+    assert sum(r["outcome"] == "repaired" for r in rows) >= 5
+    lines = (out_dir / "summary.jsonl").read_text().splitlines()
+    assert len(lines) == 6

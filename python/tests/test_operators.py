@@ -185,3 +185,47 @@ def test_suppress_feature_refills_a_cap_near_the_sphere():
     assert border_cycles(result.vertices, result.faces) == 0
     top = result.vertices[result.vertices[:, 2] > 0.9]
     assert np.all(np.abs(np.linalg.norm(top, axis=1) - 1) < 0.05)
+
+
+def cli():
+    """The mesh_repair tool of the same build, or a skip (the tests then compare only keys
+    documented in doc/python.md)."""
+    import os
+
+    build = os.environ.get("MESH_REPAIR_BUILD_DIR", "")
+    tool = os.path.join(build, "bin", "mesh_repair")
+    if not build or not os.access(tool, os.X_OK):
+        pytest.skip("the mesh_repair tool is not built beside the module")
+    return tool
+
+
+def test_reports_have_the_keys_of_the_cli_reports(tmp_path):
+    import json
+    import subprocess
+
+    tool = cli()
+    v, f = holed_sphere(3, holes=2)
+    mesh = tmp_path / "holed.off"
+    mesh_repair.write(mesh, v, f)
+    runs = {
+        "check": (["check", str(mesh), "--json"], mesh_repair.check(str(mesh))),
+        "repair": (["repair", str(mesh), "-o", str(tmp_path / "o.off"), "--report"],
+                   mesh_repair.repair(str(mesh)).report),
+        "fill": (["fill", str(mesh), "-o", str(tmp_path / "o.off"), "--report"],
+                 mesh_repair.fill_holes(str(mesh)).report),
+        "stitch": (["stitch", str(mesh), "-o", str(tmp_path / "o.off"), "--report"],
+                   mesh_repair.stitch(str(mesh)).report),
+        "slivers": (["slivers", str(mesh), "-o", str(tmp_path / "o.off"), "--report"],
+                    mesh_repair.remove_slivers(str(mesh)).report),
+        "optimize": (["optimize", str(mesh), "-o", str(tmp_path / "o.off"), "--report"],
+                     mesh_repair.optimize(str(mesh)).report),
+    }
+    for command, (arguments, ours) in runs.items():
+        report = tmp_path / f"{command}.json"
+        subprocess.run([tool, *arguments, str(report), "--quiet"], check=False,
+                       stdout=subprocess.DEVNULL)
+        theirs = json.loads(report.read_text())
+        assert ours.keys() == theirs.keys(), command
+        for key, value in theirs.items():
+            if isinstance(value, dict):
+                assert ours[key].keys() == value.keys(), (command, key)
