@@ -3,7 +3,10 @@ processes (one thread each): wall time of each run and the speed-up. Cluster sta
 timed; each run writes into a fresh folder (no resuming).
 
     PYTHONPATH=build/python /usr/bin/python3 python/benchmarks/bench_batch.py \
-        [MESH_FOLDER=.cache/cgal-demo/meshes] [FILES=40]
+        [MESH_FOLDER=.cache/cgal-demo/meshes | MESH_FILE] [FILES=40]
+
+With a folder, the first FILES meshes of 100 kB to 3 MB by name (real files of very different
+costs); with one mesh file, FILES copies of it (equal tasks: the scaling of the batch itself).
 """
 import collections
 import os
@@ -33,24 +36,45 @@ def run(paths, workers, scratch):
         seconds = time.perf_counter() - start
     outcomes = dict(collections.Counter(r["outcome"] for r in rows))
     print(f"{workers} worker(s): {seconds:.1f} s for {len(rows)} files, {outcomes}")
-    return seconds
+    return seconds, rows
+
+
+def two_worker_bound(rows):
+    """The best two workers can do with these per-file times (longest first, each to the less
+    loaded worker): one long file can cap the speed-up below 2."""
+    loads = [0.0, 0.0]
+    for t in sorted((r["seconds"] for r in rows), reverse=True):
+        loads[loads.index(min(loads))] += t
+    return sum(loads) / max(loads)
 
 
 def main():
     folder = sys.argv[1] if len(sys.argv) > 1 else ".cache/cgal-demo/meshes"
     count = int(sys.argv[2]) if len(sys.argv) > 2 else 40
-    paths = pick(folder, count)
+    scratch = tempfile.mkdtemp(prefix="mesh_repair_bench_batch-")
+    if os.path.isfile(folder):
+        os.mkdir(os.path.join(scratch, "in"))
+        name, extension = os.path.splitext(os.path.basename(folder))
+        paths = [os.path.join(scratch, "in", f"{name}-{k:02d}{extension}") for k in range(count)]
+        for path in paths:
+            shutil.copyfile(folder, path)
+    else:
+        paths = pick(folder, count)
     print(f"{len(paths)} files from {folder}, "
           f"{sum(os.path.getsize(p) for p in paths) / 1e6:.1f} MB; load average "
           f"{os.getloadavg()[0]:.1f} on {os.cpu_count()} cores")
-    scratch = tempfile.mkdtemp(prefix="mesh_repair_bench_batch-")
     try:
-        one = run(paths, 1, scratch)
-        two = run(paths, 2, scratch)
+        one, rows = run(paths, 1, scratch)
+        two, _ = run(paths, 2, scratch)
     finally:
         shutil.rmtree(scratch)
-    print(f"speed-up, 2 workers over 1: {one / two:.2f}x; load average now "
-          f"{os.getloadavg()[0]:.1f}")
+    longest = sorted(rows, key=lambda r: -r["seconds"])[:3]
+    print("longest files (1 worker): " +
+          ", ".join(f"{r['file']} {r['seconds']:.1f} s" for r in longest) +
+          "; not repaired: " + ", ".join(f"{r['file']} ({r['outcome']}{': ' + r['note'] if r['note'] else ''})"
+                                         for r in rows if r["outcome"] == "failed"))
+    print(f"speed-up, 2 workers over 1: {one / two:.2f}x (at best {two_worker_bound(rows):.2f}x "
+          f"for these per-file times); load average now {os.getloadavg()[0]:.1f}")
 
 
 if __name__ == "__main__":

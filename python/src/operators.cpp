@@ -105,6 +105,7 @@ void load_mesh(Mesh_input& input, Mesh& mesh, MR::Soup_repair_report& soup) {
   // The soup is module.cpp's copy of the arrays: the soup stage may consume it.
   if (error.empty())
     error = MR::repaired_soup_to_mesh(input.soup, mesh, soup, MR::Read_options(), input.name);
+  input.soup = Soup();  // freed here, as read_mesh frees its own: a million small vectors
   if (!error.empty()) throw Input_error(error);
 }
 

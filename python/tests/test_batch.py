@@ -111,17 +111,25 @@ def test_every_file_accounted_for_when_a_dask_worker_process_dies(tmp_path):
     folder = tmp_path / "in"
     folder.mkdir()
     for k in range(6):
-        mesh_repair.write(folder / f"sphere{k}.off", *holed_sphere(4, holes=k % 3 + 1))
+        mesh_repair.write(folder / f"sphere{k}.off", *holed_sphere(5, holes=k % 3 + 1))
     out_dir = tmp_path / "out"
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
                                   dashboard_address=None) as cluster, \
             distributed.Client(cluster) as client:
         victim = sorted(client.scheduler_info()["workers"])[0]
-        killer = threading.Timer(1.0, lambda: client.run(os._exit, 1, workers=[victim],
-                                                         wait=False))
+
+        def kill_victim():
+            try:
+                client.run(os._exit, 1, workers=[victim])
+            except Exception:  # the worker died before it could answer
+                pass
+
+        killer = threading.Timer(1.0, kill_victim)
         killer.start()
         rows = repair_many(folder, out_dir, client=client, timeout=120)
         killer.join()
+        # The nanny restarted the killed worker under a new address.
+        assert victim not in client.scheduler_info()["workers"]
     assert sorted(r["file"] for r in rows) == [f"sphere{k}.off" for k in range(6)]
     assert all(r["outcome"] in ("repaired", "crashed") for r in rows)
     assert sum(r["outcome"] == "repaired" for r in rows) >= 5
