@@ -136,7 +136,7 @@ def _run_locally(todo, spec, jobs):
     from concurrent.futures import ThreadPoolExecutor
 
     with ThreadPoolExecutor(max_workers=jobs or os.cpu_count() or 1) as pool:
-        return dict(zip(todo, pool.map(lambda p: repair_file(p, spec), todo)))
+        return dict(zip(todo, pool.map(lambda p: _repair_file_or_row(p, spec), todo)))
 
 
 def _run_on_cluster(todo, spec, client):
@@ -149,9 +149,26 @@ def _run_on_cluster(todo, spec, client):
         try:
             rows[path] = future.result()
         except Exception as error:  # the worker itself died, again and again (KilledWorker)
-            rows[path] = _row(path, "crashed", -1, 0.0, {}, f"worker lost: {error!r}"[:300])
-            _save_json(_done_marker(path, spec["out_dir"]), rows[path])
+            lost = type(error).__name__ == "KilledWorker"
+            rows[path] = _failure_row(path, spec, "crashed" if lost else "failed",
+                                      ("worker lost: " if lost else "") + repr(error))
     return rows
+
+
+def _repair_file_or_row(path, spec):
+    try:
+        return repair_file(path, spec)
+    except Exception as error:  # e.g. out_dir became unwritable: this file fails, not the batch
+        return _failure_row(path, spec, "failed", repr(error))
+
+
+def _failure_row(path, spec, outcome, note):
+    row = _row(path, outcome, -1, 0.0, {}, note[:300])
+    try:
+        _save_json(_done_marker(path, spec["out_dir"]), row)
+    except OSError:
+        pass
+    return row
 
 
 # ---- one file: the supervising task ----------------------------------------------------------------
@@ -271,7 +288,10 @@ def _write_summaries(out_dir, rows):
     csv = [",".join(columns)]
     jsonl = []
     for row in rows:
-        csv.append(",".join(_text(row[c]) for c in columns))
+        # The CLI writes unquoted CSV; a note (an exception's text) must not add columns.
+        cells = [_text(row[c]) for c in columns]
+        cells[-1] = cells[-1].replace(",", ";").replace("\n", " ")
+        csv.append(",".join(cells))
         fields = [f'"file":{json.dumps(row["file"])}', f'"outcome":"{row["outcome"]}"',
                   f'"exit_status":{row["exit_status"]}', f'"seconds":{_text(row["seconds"])}']
         fields += [f'"{k}":{_text(row[k]) or "null"}' for k in FIGURE_KEYS]
@@ -311,6 +331,10 @@ def _figures(report, status, seconds):
 
 def _child_main(child):
     """Repairs one file; exit status 0 repaired, 1 incomplete, 2 bad input, 3 out of memory."""
+    import numpy  # noqa: F401 - imported before the memory limit, which is for the repair
+
+    import mesh_repair
+
     if child.get("memory_limit"):
         import resource
 
@@ -325,8 +349,6 @@ def _child_main(child):
             raise SystemExit(_EXIT_ERROR)
 
     try:
-        import mesh_repair
-
         result = mesh_repair.repair(child["input"], progress=stop_when_orphaned,
                                     **child["options"])
         mesh_repair.write(child["output"], result.vertices, result.faces)

@@ -135,3 +135,13 @@ def test_every_file_accounted_for_when_a_dask_worker_process_dies(tmp_path):
     assert sum(r["outcome"] == "repaired" for r in rows) >= 5
     lines = (out_dir / "summary.jsonl").read_text().splitlines()
     assert len(lines) == 6
+
+
+def test_memory_limit_fails_the_file_as_out_of_memory(tmp_path):
+    folder = tmp_path / "in"
+    folder.mkdir()
+    mesh_repair.write(folder / "sphere.off", *holed_sphere(3))
+    rows = repair_many(folder, tmp_path / "tight", memory_limit=60 * 2**20, jobs=1)
+    assert (rows[0]["outcome"], rows[0]["note"]) == ("failed", "out of memory")
+    rows = repair_many(folder, tmp_path / "ample", memory_limit=2**31, jobs=1)
+    assert rows[0]["outcome"] == "repaired"
