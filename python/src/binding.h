@@ -12,6 +12,7 @@
 #include <CGAL/Mesh_repair/internal/compiled_core.h>
 #include <CGAL/Mesh_repair/io.h>
 
+#include <atomic>
 #include <cstdint>
 #include <limits>
 #include <stdexcept>
@@ -47,7 +48,7 @@ class Python_visitor {
   void start_step(const char* name);
   bool progress(double fraction);
   void end_step(const char* name);
-  bool cancelled() const { return cancelled_; }
+  bool cancelled() const { return cancelled_.load(); }
   /// The Python callable `callback(step, fraction)`, or null (a PyObject*, borrowed).
   void* callback = nullptr;
   /// The Python error that cancelled the work (a py::error_already_set*), owned.
@@ -56,7 +57,7 @@ class Python_visitor {
  private:
   bool poll(const char* step, double fraction, bool force);
   std::thread::id caller_;
-  bool cancelled_ = false;
+  std::atomic<bool> cancelled_{false};  // written by the caller's thread, read by workers
   double last_poll_ = -1;
   std::string step_;
 };

@@ -192,7 +192,9 @@ Operator_output check(Mesh_input& input, const Check_options& options, Python_vi
   std::ostringstream text;
   MR::Json_writer json(text, false);
   MR::write_json(json, report);
-  return finish(mesh, text);
+  Operator_output out;  // no arrays: the mesh is the caller's, unchanged
+  out.report = text.str();
+  return out;
 }
 
 Operator_output repair(Mesh_input& input, const Repair_options& options, Python_visitor& visitor) {
