@@ -89,6 +89,16 @@ char dtype_kind(const py::array& a) {
   return a.dtype().attr("kind").cast<std::string>()[0];
 }
 
+// The readers' limit (internal/readers/byte_reader.h): CGAL's soup repair and orientation are
+// not linear in a polygon's size, so a huge polygon would stall the call.
+void check_polygon_size(std::size_t face, std::size_t size) {
+  namespace readers = CGAL::Mesh_repair::internal::readers;
+  if (size <= readers::max_polygon_vertices) return;
+  throw Input_error("faces: face " + std::to_string(face) + ": a face of " + std::to_string(size) +
+                    " vertices exceeds the limit of " +
+                    std::to_string(readers::max_polygon_vertices) + " vertices per face");
+}
+
 // np.asarray(object), or ValueError naming the argument.
 py::array as_array(const py::object& object, const char* what) {
   try {
@@ -115,6 +125,7 @@ py::array_t<std::int64_t, py::array::c_style> face_array(const py::array& a) {
   if (a.ndim() != 2 || (a.shape(1) < 3 && a.shape(0) > 0))
     throw Input_error("faces must be an array of shape (m, 3) (or (m, k), k >= 3), got shape " +
                       shape_text(a));
+  if (a.shape(0) > 0) check_polygon_size(0, std::size_t(a.shape(1)));
   return py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(a);
 }
 
@@ -134,8 +145,10 @@ void read_polygon_list(const py::sequence& faces, std::size_t vertices, Soup& so
     if (!py::isinstance<py::sequence>(polygon) || py::isinstance<py::str>(polygon))
       throw Input_error("faces: polygon " + std::to_string(f) +
                         " is not a sequence of vertex indices");
+    const auto items = py::reinterpret_borrow<py::sequence>(polygon);
+    check_polygon_size(f, items.size());
     std::vector<std::size_t> corners;
-    for (const py::handle item : py::reinterpret_borrow<py::sequence>(polygon)) {
+    for (const py::handle item : items) {
       // Booleans are integers to Python and numpy, not vertex indices.
       if (!PyIndex_Check(item.ptr()) || PyBool_Check(item.ptr()) ||
           std::strcmp(Py_TYPE(item.ptr())->tp_name, "numpy.bool_") == 0)

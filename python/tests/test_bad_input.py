@@ -41,6 +41,9 @@ def test_messages_name_the_problem(tmp_path):
     assert "continuity must be in [0, 2]" in message(lambda: mesh_repair.repair(v, f, continuity=5))
     assert "method expects one of" in message(lambda: mesh_repair.fill_holes(v, f, method="x"))
     assert "holds a non-integer" in message(lambda: mesh_repair.check(v, [[0, 1, "a"]]))
+    huge = [list(range(8)) * 1251]  # 10008 corners: the readers' limit is 10000
+    assert "exceeds the limit of 10000 vertices per face" in message(
+        lambda: mesh_repair.check(v, huge))
 
 
 def test_file_messages_are_the_cli_ones(tmp_path):
