@@ -219,6 +219,10 @@ def test_reports_have_the_keys_of_the_cli_reports(tmp_path):
                     mesh_repair.remove_slivers(str(mesh)).report),
         "optimize": (["optimize", str(mesh), "-o", str(tmp_path / "o.off"), "--report"],
                      mesh_repair.optimize(str(mesh)).report),
+        "suppress": (["suppress", str(mesh), "-o", str(tmp_path / "o.off"), "--sphere",
+                      "1,0,0,0.35", "--report"],
+                     mesh_repair.suppress_feature(str(mesh), faces_to_remove=mesh_repair
+                                                  .faces_in_sphere(v, f, [1, 0, 0], 0.35)).report),
     }
     for command, (arguments, ours) in runs.items():
         report = tmp_path / f"{command}.json"
@@ -229,3 +233,5 @@ def test_reports_have_the_keys_of_the_cli_reports(tmp_path):
         for key, value in theirs.items():
             if isinstance(value, dict):
                 assert ours[key].keys() == value.keys(), (command, key)
+            if isinstance(value, list) and value and isinstance(value[0], dict):
+                assert ours[key][0].keys() == value[0].keys(), (command, key)
