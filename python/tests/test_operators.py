@@ -235,3 +235,42 @@ def test_reports_have_the_keys_of_the_cli_reports(tmp_path):
                 assert ours[key].keys() == value.keys(), (command, key)
             if isinstance(value, list) and value and isinstance(value[0], dict):
                 assert ours[key][0].keys() == value[0].keys(), (command, key)
+
+
+def test_gil_is_released_while_the_library_works():
+    """A Python thread keeps running during a repair (it could not if the GIL were held)."""
+    import threading
+    import time
+
+    v, f = holed_sphere(5, holes=3)  # about 20k faces: a fraction of a second of work
+    ticks = [0]
+    done = threading.Event()
+
+    def count():
+        while not done.is_set():
+            ticks[0] += 1
+            time.sleep(0.001)
+
+    counter = threading.Thread(target=count)
+    counter.start()
+    start = time.monotonic()
+    ticks_before = ticks[0]
+    result = mesh_repair.repair(v, f)
+    seconds = time.monotonic() - start
+    ticks_during = ticks[0] - ticks_before
+    done.set()
+    counter.join()
+    assert result.report["repair"]["closed"]
+    # At least a tick per 10 ms of repair; a held GIL would allow about one per 5 ms switch
+    # interval only between the library's progress calls, i.e. almost none.
+    assert ticks_during >= seconds / 0.01 * 0.5, (ticks_during, seconds)
+
+
+def test_two_threads_repair_two_meshes_at_once():
+    from concurrent.futures import ThreadPoolExecutor
+
+    meshes = [holed_sphere(4, holes=1), holed_sphere(4, holes=3)]
+    with ThreadPoolExecutor(2) as pool:
+        results = list(pool.map(lambda m: mesh_repair.repair(*m), meshes))
+    assert [r.report["repair"]["holes_filled"] for r in results] == [1, 3]
+    assert all(border_cycles(r.vertices, r.faces) == 0 for r in results)
