@@ -94,7 +94,7 @@ def test_dask_local_cluster_of_two_workers(inputs, faulty_python, tmp_path):
     distributed = pytest.importorskip("distributed")
     out_dir = tmp_path / "out"
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
-                                  dashboard_address=None) as cluster, \
+                                  dashboard_address=None, local_directory=tmp_path / "dask") as cluster, \
             distributed.Client(cluster) as client:
         rows = repair_many(inputs, out_dir, client=client, timeout=5,
                            python_executable=faulty_python)
@@ -114,7 +114,7 @@ def test_every_file_accounted_for_when_a_dask_worker_process_dies(tmp_path):
         mesh_repair.write(folder / f"sphere{k}.off", *holed_sphere(5, holes=k % 3 + 1))
     out_dir = tmp_path / "out"
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
-                                  dashboard_address=None) as cluster, \
+                                  dashboard_address=None, local_directory=tmp_path / "dask") as cluster, \
             distributed.Client(cluster) as client:
         victim = sorted(client.scheduler_info()["workers"])[0]
 
