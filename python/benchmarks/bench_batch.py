@@ -30,7 +30,8 @@ def pick(folder, count):
 def run(paths, workers, scratch):
     out_dir = os.path.join(scratch, f"out-{workers}")
     with LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
-                      dashboard_address=None) as cluster, Client(cluster) as client:
+                      dashboard_address=None, local_directory=os.path.join(scratch, "dask")) \
+            as cluster, Client(cluster) as client:
         start = time.perf_counter()
         rows = repair_many(paths, out_dir, client=client, timeout=600)
         seconds = time.perf_counter() - start
