@@ -3,7 +3,8 @@
 # Usage: scripts/setup.sh [--with-plots] [--with-format] [--with-python] [--with-fuzz]
 #   --with-plots   adds python3-matplotlib for the bench plots and the pictures of filled holes
 #   --with-format  adds clang-format for scripts/check_format.sh (CI)
-#   --with-python  adds pybind11-dev, python3-numpy and python3-pytest for python/ and its tests
+#   --with-python  adds pybind11-dev, python3-numpy, python3-pytest and python3-distributed (Dask)
+#                  for python/ and its tests
 #   --with-fuzz    adds clang-14 and libclang-rt-14-dev for the libFuzzer targets (scripts/fuzz.sh)
 set -euo pipefail
 
@@ -13,7 +14,7 @@ for arg in "$@"; do
   case "$arg" in
     --with-plots) packages+=(python3-matplotlib) ;;
     --with-format) packages+=(clang-format) ;;
-    --with-python) packages+=(pybind11-dev python3-numpy python3-pytest) ;;
+    --with-python) packages+=(pybind11-dev python3-numpy python3-pytest python3-distributed) ;;
     --with-fuzz) packages+=(clang-14 libclang-rt-14-dev) ;;
     *)
       echo "setup: unknown option $arg (use --with-plots, --with-format, --with-python, --with-fuzz)" >&2

@@ -25,8 +25,11 @@ else
   "$root/scripts/setup.sh"
 fi
 "$root/scripts/fetch_demo_data.sh" || true
+# The Python module is built with the rest when there are Python tests to run it.
+python_option=()
+((python_tests)) && python_option=(-DMESH_REPAIR_PYTHON=ON)
 "$root/scripts/build.sh" -DMESH_REPAIR_BUILD_TESTS=ON -DMESH_REPAIR_BUILD_EXAMPLES=ON \
-  -DMESH_REPAIR_BUILD_CLI=ON "$@"
+  -DMESH_REPAIR_BUILD_CLI=ON "${python_option[@]}" "$@"
 cd "$build_dir"
 ctest --output-on-failure --no-tests=error -j "${MESH_REPAIR_JOBS:-$(nproc)}" --timeout 1200
 
@@ -39,7 +42,11 @@ if ((python_tests)); then
   python=${PYTHON:-python3}
   [[ -z ${PYTHON:-} && -x /usr/bin/python3 ]] && python=/usr/bin/python3
   status=0
-  "$python" -m pytest -q "$root/python" || status=$?
+  # The package as built (module and Python files together in <build>/python), and the real
+  # meshes where fetch_demo_data.sh put them.
+  PYTHONPATH="$build_dir/python${PYTHONPATH:+:$PYTHONPATH}" \
+    MESH_REPAIR_BUILD_DIR="$build_dir" \
+    "$python" -m pytest -q "$root/python" || status=$?
   if ((status == 5)); then
     echo "test.sh: pytest collected no test in python/" >&2
     exit 1

@@ -30,37 +30,6 @@ const char* const optimize_help =
     "  unchanged. Corners and feature lines (dihedral angle below --feature-angle) are kept.\n"
     "  Exit status 1 when the reduction target is not reached.\n";
 
-namespace {
-
-void write_quality(CGAL::Mesh_repair::Json_writer& json, const std::string& name,
-                   const CGAL::Mesh_repair::Quality_statistics& q) {
-  json.key(name).begin_object();
-  json.field("triangles", q.triangles).field("min_angle_deg", q.min_angle_deg);
-  json.field("min_alpha", q.min_alpha).field("mean_alpha", q.mean_alpha);
-  json.field("mean_shape_factor", q.mean_shape_factor);
-  json.end_object();
-}
-
-void write_result(CGAL::Mesh_repair::Json_writer& json,
-                  const CGAL::Mesh_repair::Optimization_result& r) {
-  json.key("optimization").begin_object();
-  json.field("input_faces", r.input_faces).field("output_faces", r.output_faces);
-  json.field("passes", r.passes).field("regions_replaced", r.regions_replaced);
-  json.field("regions_duplicate_edge", r.regions_duplicate_edge);
-  json.field("regions_fold_or_crease", r.regions_fold_or_crease);
-  json.field("regions_self_intersection", r.regions_self_intersection);
-  json.field("regions_not_better", r.regions_not_better);
-  json.field("regions_too_far", r.regions_too_far);
-  json.field("regions_without_triangulation", r.regions_without_triangulation);
-  json.field("regions_refused_by_mesh", r.regions_refused_by_mesh);
-  json.field("corner_nodes", r.corner_nodes).field("feature_edges", r.feature_edges);
-  json.field("target_reached", r.target_reached).field("cancelled", r.cancelled);
-  json.field("stop_reason", r.stop_reason);
-  json.end_object();
-}
-
-}  // namespace
-
 int run_optimize(const std::vector<std::string>& args) {
   namespace MR = CGAL::Mesh_repair;
   Arguments arguments(args, {"--quiet"},
@@ -137,9 +106,12 @@ int run_optimize(const std::vector<std::string>& args) {
     json.key("soup");
     MR::write_json(json, soup);
     json.field("target_faces", target_faces).field("seconds", seconds);
-    write_result(json, result);
-    write_quality(json, "quality_before", quality_before);
-    write_quality(json, "quality_after", quality_after);
+    json.key("optimization");
+    MR::write_json(json, result);
+    json.key("quality_before");
+    MR::write_json(json, quality_before);
+    json.key("quality_after");
+    MR::write_json(json, quality_after);
     json.end_object();
     save_text(arguments.get("--report"), text.str());
   }

@@ -284,6 +284,29 @@ std::string soup_to_mesh(const Polygon_soup<Point>& soup, PolygonMesh& pm, bool 
   return {};
 }
 
+/// The steps of `read_mesh` after reading: repairs and orients a validated `soup` (consumed)
+/// and converts it into `pm`, counting every change in `report`. Also for soups that come from
+/// elsewhere than a file (the Python module's arrays); `name` starts the messages. Returns an
+/// empty string on success, else one line describing the problem (then `pm` is left empty).
+template <class PolygonMesh, class Point>
+std::string repaired_soup_to_mesh(Polygon_soup<Point>& soup, PolygonMesh& pm,
+                                  Soup_repair_report& report, const Read_options& options,
+                                  const std::string& name) {
+  report = Soup_repair_report();
+  report.input_points = soup.points.size();
+  report.input_polygons = soup.polygons.size();
+  if (options.repair_soup) report = repair_polygon_soup(soup);
+  report.input_polygons += soup.short_polygons_skipped;
+  report.degenerate_polygons_removed += soup.short_polygons_skipped;
+  if (soup.polygons.empty()) return name + ": no valid face left after soup repair";
+  const std::string error = soup_to_mesh(soup, pm, options.triangulate, report);
+  if (!error.empty()) {
+    clear(pm);
+    return name + ": " + error;
+  }
+  return {};
+}
+
 /// Reads, validates, repairs and converts `filename` into `pm`. Returns an empty string on
 /// success, else one line describing the problem (then `pm` is left empty).
 template <class PolygonMesh>
@@ -292,21 +315,9 @@ std::string read_mesh(const std::string& filename, PolygonMesh& pm, Soup_repair_
   using Point = typename boost::property_traits<
       typename boost::property_map<PolygonMesh, CGAL::vertex_point_t>::type>::value_type;
   Polygon_soup<Point> soup;
-  std::string error = read_polygon_soup(filename, soup);
+  const std::string error = read_polygon_soup(filename, soup);
   if (!error.empty()) return error;
-  report = Soup_repair_report();
-  report.input_points = soup.points.size();
-  report.input_polygons = soup.polygons.size();
-  if (options.repair_soup) report = repair_polygon_soup(soup);
-  report.input_polygons += soup.short_polygons_skipped;
-  report.degenerate_polygons_removed += soup.short_polygons_skipped;
-  if (soup.polygons.empty()) return filename + ": no valid face left after soup repair";
-  error = soup_to_mesh(soup, pm, options.triangulate, report);
-  if (!error.empty()) {
-    clear(pm);
-    return filename + ": " + error;
-  }
-  return {};
+  return repaired_soup_to_mesh(soup, pm, report, options, filename);
 }
 
 /// Writes `pm` to `filename` (format by extension; `binary` selects binary STL/PLY) through a
@@ -381,6 +392,9 @@ CGAL_MESH_REPAIR_IO_EXTERN template Soup_repair_report repair_polygon_soup(
 CGAL_MESH_REPAIR_IO_EXTERN template std::string soup_to_mesh(
     const Polygon_soup<internal::Core_traits::Point_3>&, internal::Core_mesh&, bool,
     Soup_repair_report&);
+CGAL_MESH_REPAIR_IO_EXTERN template std::string repaired_soup_to_mesh(
+    Polygon_soup<internal::Core_traits::Point_3>&, internal::Core_mesh&, Soup_repair_report&,
+    const Read_options&, const std::string&);
 CGAL_MESH_REPAIR_IO_EXTERN template std::string read_mesh(const std::string&, internal::Core_mesh&,
                                                           Soup_repair_report&, const Read_options&);
 CGAL_MESH_REPAIR_IO_EXTERN template std::string write_mesh(const std::string&,

@@ -6,6 +6,8 @@
 /// \file optimization_result.h
 /// The mode and the result of `optimize_mesh` (thesis chapter 7).
 
+#include <CGAL/Mesh_repair/json_writer.h>
+
 #include <cstddef>
 
 namespace CGAL {
@@ -36,6 +38,25 @@ struct Optimization_result {
   bool cancelled = false;
   const char* stop_reason = "";
 };
+
+/// Writes the result as a JSON object (the `optimization` member of `mesh_repair optimize`'s
+/// report).
+inline void write_json(Json_writer& json, const Optimization_result& r) {
+  json.begin_object();
+  json.field("input_faces", r.input_faces).field("output_faces", r.output_faces);
+  json.field("passes", r.passes).field("regions_replaced", r.regions_replaced);
+  json.field("regions_duplicate_edge", r.regions_duplicate_edge);
+  json.field("regions_fold_or_crease", r.regions_fold_or_crease);
+  json.field("regions_self_intersection", r.regions_self_intersection);
+  json.field("regions_not_better", r.regions_not_better);
+  json.field("regions_too_far", r.regions_too_far);
+  json.field("regions_without_triangulation", r.regions_without_triangulation);
+  json.field("regions_refused_by_mesh", r.regions_refused_by_mesh);
+  json.field("corner_nodes", r.corner_nodes).field("feature_edges", r.feature_edges);
+  json.field("target_reached", r.target_reached).field("cancelled", r.cancelled);
+  json.field("stop_reason", r.stop_reason);
+  json.end_object();
+}
 
 }  // namespace Mesh_repair
 }  // namespace CGAL

@@ -16,6 +16,7 @@
 /// Degenerate (zero-area) triangles get 0 for alpha, Q and f.
 
 #include <CGAL/Mesh_repair/internal/vec3.h>
+#include <CGAL/Mesh_repair/json_writer.h>
 
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/boost/graph/properties.h>
@@ -150,6 +151,16 @@ struct Quality_statistics {
   std::vector<std::size_t> alpha_histogram, aspect_ratio_histogram, shape_factor_histogram;
   std::vector<std::size_t> min_angle_histogram;  ///< bins over [0, 60] degrees
 };
+
+/// Writes the summary figures of `q` as a JSON object (the `quality_before` and `quality_after`
+/// members of `mesh_repair optimize`'s report; the histograms are left out).
+inline void write_json(Json_writer& json, const Quality_statistics& q) {
+  json.begin_object();
+  json.field("triangles", q.triangles).field("min_angle_deg", q.min_angle_deg);
+  json.field("min_alpha", q.min_alpha).field("mean_alpha", q.mean_alpha);
+  json.field("mean_shape_factor", q.mean_shape_factor);
+  json.end_object();
+}
 
 /// Quality statistics over the triangles of `pm` (faces with other degrees are skipped).
 template <class PolygonMesh, class VertexPointMap>

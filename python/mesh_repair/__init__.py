@@ -1,0 +1,294 @@
+"""Mesh_repair for Python: repair triangle meshes and fill holes, numpy arrays in and out.
+
+Every operator takes a mesh as ``(vertices, faces)`` -- vertices a float64 array of shape
+(n, 3), faces an integer array of shape (m, 3) or a list of polygons -- or as the path of an
+OFF, OBJ, STL or PLY file, and returns new arrays and a report dict with the keys of the JSON
+report of the matching ``mesh_repair`` command (doc/report_schema.md). The input arrays are
+never modified. The input goes through the CLI's polygon-soup stage first (validation, CGAL's
+soup repair and orientation, triangulation), whose changes the report counts.
+
+Bad input raises ``ValueError`` with the CLI's one-line reason. The work runs without the
+GIL; Ctrl-C stops it at the next progress point and raises ``KeyboardInterrupt`` (nothing is
+returned, nothing was modified). ``progress=callback`` is called as ``callback(step, fraction)``
+from the calling thread, at most every 50 ms and at each step boundary; an exception it raises
+cancels the work and propagates.
+
+Batch repair of many files, locally or on a Dask cluster: ``mesh_repair.batch.repair_many``.
+See doc/python.md.
+"""
+
+import json as _json
+import math as _math
+import numbers as _numbers
+import os as _os
+from collections import namedtuple as _namedtuple
+
+from . import _core
+
+__all__ = [
+    "Result",
+    "read",
+    "write",
+    "check",
+    "repair",
+    "fill_holes",
+    "stitch",
+    "remove_slivers",
+    "optimize",
+    "suppress_feature",
+    "faces_in_sphere",
+    "faces_in_box",
+    "FILL_METHODS",
+]
+
+#: ``(vertices, faces, report)``: what every operator that makes a mesh returns. ``faces`` is an
+#: int64 array of shape (m, k) when every face has k vertices, else a list of polygons.
+Result = _namedtuple("Result", "vertices faces report")
+
+#: The hole-filling methods (doc/fill_holes.md).
+FILL_METHODS = (
+    "self_validated",
+    "auto",
+    "advancing_front",
+    "shape_prediction",
+    "curvature_variation",
+    "liepa",
+)
+
+
+# ---- argument checks (the CLI's messages, with Python's parameter names) ----------------------
+
+
+def _source(vertices, faces):
+    """A path, or the (vertices, faces) pair the compiled module checks and copies."""
+    if isinstance(vertices, (str, bytes, _os.PathLike)):
+        if faces is not None:
+            raise ValueError("give either a path or (vertices, faces), not both")
+        path = _os.fsdecode(vertices)
+        if not path:
+            raise ValueError("the path is empty")
+        return path
+    if faces is None:
+        raise ValueError("faces are missing: give (vertices, faces) or the path of a mesh file")
+    return (vertices, faces)
+
+
+def _number(name, value, low=-_math.inf, high=_math.inf, integer=False):
+    kind = _numbers.Integral if integer else _numbers.Real
+    if isinstance(value, bool) or not isinstance(value, kind):
+        raise ValueError(f"{name} expects {'an integer' if integer else 'a number'}, got {value!r}")
+    if not (low <= value <= high) or (not integer and _math.isnan(value)):
+        raise ValueError(f"{name} must be in [{low}, {high}], got {value!r}")
+    return int(value) if integer else float(value)
+
+
+def _tolerance(options, tolerance, tolerance_rel):
+    if tolerance is not None and tolerance_rel is not None:
+        raise ValueError("give either tolerance or tolerance_rel, not both")
+    if tolerance is not None:
+        options["tolerance"] = _number("tolerance", tolerance, 0)
+    if tolerance_rel is not None:
+        options["tolerance_rel"] = _number("tolerance_rel", tolerance_rel, 0)
+    return options
+
+
+def _method(name, value):
+    if value not in FILL_METHODS:
+        raise ValueError(f"{name} expects one of {', '.join(FILL_METHODS)}, got {value!r}")
+    return value
+
+
+def _sheet_ratio(sheet_border_ratio, fill_sheet_borders):
+    if fill_sheet_borders:
+        return _math.inf
+    ratio = _number("sheet_border_ratio", sheet_border_ratio)
+    if not ratio > 0:
+        raise ValueError("sheet_border_ratio must be positive")
+    return ratio
+
+
+def _progress(progress):
+    if progress is not None and not callable(progress):
+        raise ValueError("progress must be a callable (step, fraction) or None")
+    return progress
+
+
+def _result(raw):
+    vertices, faces, report = raw
+    return Result(vertices, faces, _json.loads(report))
+
+
+# ---- operators ---------------------------------------------------------------------------------
+
+
+def read(path, *, repair_soup=True):
+    """Reads a mesh file (OFF, OBJ, STL, PLY) as the CLI does: validated, soup repaired and
+    oriented (unless ``repair_soup=False``), polygons triangulated. Returns a ``Result``; the
+    report holds ``input``, ``vertices``, ``faces`` and ``soup_repair``."""
+    return _result(_core.read(_source(path, None), bool(repair_soup)))
+
+
+def write(path, vertices, faces, *, binary=False):
+    """Writes the mesh to ``path`` (format by extension; ``binary`` for STL/PLY) through a
+    temporary file renamed into place. The arrays must form a valid polygon mesh (they are not
+    repaired: use ``repair``). Returns ``{"output", "vertices", "faces", "binary"}``."""
+    return _json.loads(_core.write(_os.fspath(path), vertices, faces, bool(binary)))
+
+
+def check(vertices, faces=None, *, tolerance=None, tolerance_rel=None, self_intersections=True,
+          progress=None):
+    """Every defect of the mesh (``mesh_repair check --json``): border cycles, non-manifold
+    elements, duplicated, degenerate and sliver faces, gaps, T-junctions, overlaps,
+    self-intersections, components, closedness; the soup stage's findings merged in.
+    ``tolerance`` (model units) or ``tolerance_rel`` (fraction of the bounding-box diagonal)
+    is the gap / T-junction distance. Returns the report dict."""
+    options = _tolerance({"self_intersections": bool(self_intersections)}, tolerance,
+                         tolerance_rel)
+    return _result(_core.check(_source(vertices, faces), options, _progress(progress))).report
+
+
+def repair(vertices, faces=None, *, tolerance=None, tolerance_rel=None, fill="self_validated",
+           continuity=1, max_hole_size=None, max_hole_edges=None, sheet_border_ratio=0.9,
+           fill_sheet_borders=False, largest_component=False, ring_holes=True,
+           self_intersections=True, remove_self_intersections=False, threads=0, seed=0,
+           progress=None):
+    """The automatic repair pipeline (``mesh_repair repair``): soup repair and orientation,
+    stitching of gaps and overlaps, T-junctions, degenerate faces, hole filling, verification.
+    Options as the CLI's (``mesh_repair repair --help``): ``fill`` one of ``FILL_METHODS``,
+    ``continuity`` 0-2 (Liepa fairing), ``max_hole_size`` (fraction of the bounding-box
+    diagonal) and ``max_hole_edges`` leave larger holes open, ``threads`` 0 = all cores.
+    Returns a ``Result``; the report holds ``soup_repair``, ``defects_before``,
+    ``defects_after`` and ``repair``."""
+    options = _tolerance({}, tolerance, tolerance_rel)
+    options.update(
+        fill=_method("fill", fill),
+        continuity=_number("continuity", continuity, 0, 2, integer=True),
+        sheet_border_ratio=_sheet_ratio(sheet_border_ratio, fill_sheet_borders),
+        largest_component=bool(largest_component),
+        ring_holes=bool(ring_holes),
+        self_intersections=bool(self_intersections),
+        remove_self_intersections=bool(remove_self_intersections),
+        threads=_number("threads", threads, 0, 1024, integer=True),
+        seed=_number("seed", seed, 0, 2**32 - 1, integer=True),
+    )
+    if max_hole_size is not None:
+        options["max_hole_size"] = _number("max_hole_size", max_hole_size, 0)
+    if max_hole_edges is not None:
+        options["max_hole_edges"] = _number("max_hole_edges", max_hole_edges, 3, integer=True)
+    return _result(_core.repair(_source(vertices, faces), options, _progress(progress)))
+
+
+def fill_holes(vertices, faces=None, *, method="self_validated", continuity=1,
+               max_hole_edges=None, max_hole_size=None, sheet_border_ratio=0.9,
+               fill_sheet_borders=False, ring_holes=True, threads=0, seed=0, progress=None):
+    """Fills the holes with one method (``mesh_repair fill``); every patch is checked with exact
+    predicates and rolled back if it fails. ``method`` one of ``FILL_METHODS``; ``continuity``
+    0-2 for liepa; holes with more than ``max_hole_edges`` border edges or wider than
+    ``max_hole_size`` x the bounding-box diagonal stay open. Returns a ``Result``; the report
+    holds ``method``, ``output_closed`` and ``result`` (one entry per hole)."""
+    options = {
+        "method": _method("method", method),
+        "continuity": _number("continuity", continuity, 0, 2, integer=True),
+        "sheet_border_ratio": _sheet_ratio(sheet_border_ratio, fill_sheet_borders),
+        "ring_holes": bool(ring_holes),
+        "threads": _number("threads", threads, 0, 1024, integer=True),
+        "seed": _number("seed", seed, 0, 2**32 - 1, integer=True),
+    }
+    if max_hole_edges is not None:
+        options["max_hole_edges"] = _number("max_hole_edges", max_hole_edges, 3, integer=True)
+    if max_hole_size is not None:
+        size = _number("max_hole_size", max_hole_size)
+        if not size > 0:
+            raise ValueError("max_hole_size must be positive")
+        options["max_hole_size"] = size
+    return _result(_core.fill_holes(_source(vertices, faces), options, _progress(progress)))
+
+
+def stitch(vertices, faces=None, *, tolerance=None, tolerance_rel=None, curves=True,
+           progress=None):
+    """Closes gaps, small overlaps and T-junctions within a tolerance (``mesh_repair stitch``;
+    default tolerance: half the shortest border edge at each node). ``curves=False`` puts
+    T-junction nodes on the chord instead of the cubic boundary curve. Returns a ``Result``;
+    the report holds the border cycles before and after and ``stitch``."""
+    options = _tolerance({"curves": bool(curves)}, tolerance, tolerance_rel)
+    return _result(_core.stitch(_source(vertices, faces), options, _progress(progress)))
+
+
+def remove_slivers(vertices, faces=None, *, shape_factor=0.7, feature_angle=135.0,
+                   edge_length=None, progress=None):
+    """Removes sliver triangles (shape factor below ``shape_factor``) by node merging and edge
+    swapping, keeping edges whose faces meet at less than ``feature_angle`` degrees
+    (``mesh_repair slivers``). Returns a ``Result``; the report holds ``slivers``."""
+    options = {
+        "shape_factor": _number("shape_factor", shape_factor, 0, 1),
+        "feature_angle": _number("feature_angle", feature_angle, 0, 180),
+        "edge_length": -1.0 if edge_length is None else _number("edge_length", edge_length, 0),
+    }
+    return _result(_core.remove_slivers(_source(vertices, faces), options, _progress(progress)))
+
+
+def optimize(vertices, faces=None, *, mode="reduction", target_ratio=None, target_faces=None,
+             max_deviation=None, feature_angle=135.0, min_angle=15.0, seed=0, progress=None):
+    """GA mesh reduction or quality improvement keeping features (``mesh_repair optimize``).
+    ``mode`` "reduction" (to ``target_faces``, or ``target_ratio`` x the faces, default 0.5, or
+    while the normal deviation stays below ``max_deviation``) or "quality". Returns a
+    ``Result``; the report holds ``optimization``, ``quality_before`` and ``quality_after``."""
+    if mode not in ("reduction", "quality"):
+        raise ValueError(f"mode must be reduction or quality, got {mode!r}")
+    if target_ratio is not None and target_faces is not None:
+        raise ValueError("give target_ratio or target_faces, not both")
+    options = {
+        "mode": mode,
+        "feature_angle": _number("feature_angle", feature_angle, 0, 180),
+        "min_angle": _number("min_angle", min_angle, 0, 60),
+        "seed": _number("seed", seed, 0, 2**32 - 1, integer=True),
+    }
+    if target_ratio is not None:
+        options["target_ratio"] = _number("target_ratio", target_ratio, 0, 1)
+    if target_faces is not None:
+        options["target_faces"] = _number("target_faces", target_faces, 0, integer=True)
+    if max_deviation is not None:
+        options["max_deviation"] = _number("max_deviation", max_deviation, 0)
+    return _result(_core.optimize(_source(vertices, faces), options, _progress(progress)))
+
+
+def suppress_feature(vertices, faces=None, *, faces_to_remove, method="shape_prediction", seed=0,
+                     progress=None):
+    """Feature suppression by hole repair (``mesh_repair suppress``, thesis 6.1): removes the
+    faces ``faces_to_remove`` (indices into the faces, e.g. from ``faces_in_sphere``) and fills
+    every hole this opens with ``method`` (shape prediction by default). Returns a ``Result``;
+    the report holds ``removed_faces`` and one entry per opened hole."""
+    import numpy as np
+
+    indices = np.asarray(faces_to_remove)
+    if indices.dtype.kind not in "iu" or indices.ndim != 1:
+        raise ValueError("faces_to_remove must be a 1-D sequence of face indices")
+    options = {
+        "faces": [int(i) for i in indices],
+        "method": _method("method", method),
+        "seed": _number("seed", seed, 0, 2**32 - 1, integer=True),
+    }
+    return _result(_core.suppress_feature(_source(vertices, faces), options, _progress(progress)))
+
+
+def _centroids(vertices, faces):
+    import numpy as np
+
+    return np.asarray(vertices, float)[np.asarray(faces)].mean(axis=1)
+
+
+def faces_in_sphere(vertices, faces, centre, radius):
+    """Indices of the triangles whose centroid lies in the ball (``suppress --sphere``)."""
+    import numpy as np
+
+    distance = np.linalg.norm(_centroids(vertices, faces) - np.asarray(centre, float), axis=1)
+    return np.flatnonzero(distance <= radius)
+
+
+def faces_in_box(vertices, faces, low, high):
+    """Indices of the triangles whose centroid lies in the axis-aligned box (``--box``)."""
+    import numpy as np
+
+    c = _centroids(vertices, faces)
+    return np.flatnonzero(np.all((c >= np.asarray(low, float)) & (c <= np.asarray(high, float)),
+                                 axis=1))

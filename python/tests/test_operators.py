@@ -1,0 +1,276 @@
+"""Every operator on real geometry: border cycles, closedness, validity, files read back."""
+import numpy as np
+import pytest
+
+import mesh_repair
+from meshes import cube, holed_sphere, icosphere
+
+
+def border_cycles(vertices, faces):
+    return mesh_repair.check(vertices, faces, self_intersections=False)["border_cycles"]
+
+
+def test_closed_cube_has_no_defect():
+    report = mesh_repair.check(*cube())
+    assert report["border_cycles"] == 0
+    assert report["closed"] is True
+    assert report["defects_found"] is False
+    assert report["soup_repair"]["input_polygons"] == 12
+
+
+def test_cube_without_a_side_has_one_border_cycle_of_four_edges():
+    v, f = cube()
+    report = mesh_repair.check(v, f[2:])
+    assert report["border_cycles"] == 1
+    assert report["closed"] is False
+
+
+def test_repair_closes_two_holes_and_leaves_input_arrays_untouched():
+    v, f = holed_sphere(3, holes=2)
+    v_before, f_before = v.copy(), f.copy()
+    assert border_cycles(v, f) == 2
+    result = mesh_repair.repair(v, f)
+    np.testing.assert_array_equal(v, v_before)
+    np.testing.assert_array_equal(f, f_before)
+    assert result.report["defects_before"]["border_cycles"] == 2
+    assert result.report["defects_after"]["border_cycles"] == 0
+    repair = result.report["repair"]
+    assert repair["complete"] and repair["valid"] and repair["closed"]
+    assert repair["holes_filled"] == 2
+    assert result.vertices.dtype == np.float64 and result.vertices.shape[1] == 3
+    assert result.faces.dtype == np.int64 and result.faces.shape[1] == 3
+    assert result.faces.min() >= 0 and result.faces.max() < len(result.vertices)
+    assert border_cycles(result.vertices, result.faces) == 0
+    # The new vertices stay near the unit sphere (the holes are small caps of it).
+    radii = np.linalg.norm(result.vertices, axis=1)
+    assert radii.min() > 0.85 and radii.max() < 1.05
+
+
+@pytest.mark.parametrize("method", mesh_repair.FILL_METHODS)
+def test_every_fill_method_closes_a_sphere_with_two_holes(method):
+    v, f = holed_sphere(3, holes=2)
+    result = mesh_repair.fill_holes(v, f, method=method)
+    assert result.report["output_closed"] is True
+    assert result.report["result"]["filled"] == 2
+    assert border_cycles(result.vertices, result.faces) == 0
+
+
+def test_max_hole_edges_leaves_larger_holes_open():
+    v, f = holed_sphere(3, holes=1, radius=0.5)
+    result = mesh_repair.fill_holes(v, f, max_hole_edges=3)
+    assert result.report["result"]["filled"] == 0
+    assert border_cycles(result.vertices, result.faces) == 1
+
+
+def test_stitch_closes_a_gap_between_two_hemispheres():
+    v, f = icosphere(3)
+    # Upper hemisphere faces use their own copy of every vertex, moved up by 1e-4: a gap.
+    upper = v[f].mean(axis=1)[:, 2] > 0
+    copy = v + np.array([0, 0, 1e-4])
+    f2 = f.copy()
+    f2[upper] += len(v)
+    v2 = np.vstack([v, copy])
+    assert border_cycles(v2, f2) == 2
+    result = mesh_repair.stitch(v2, f2, tolerance=1e-3)
+    assert result.report["border_cycles_before"] == 2
+    assert result.report["border_cycles_after"] == 0
+    assert result.report["closed"] is True
+    assert border_cycles(result.vertices, result.faces) == 0
+
+
+def test_remove_slivers_keeps_a_valid_closed_mesh():
+    v, f = icosphere(3)
+    v = v.copy()
+    # Pull one vertex almost onto its neighbour: two slivers around the short edge.
+    a, b = f[0][0], f[0][1]
+    v[a] = v[b] + 0.02 * (v[a] - v[b])
+    result = mesh_repair.remove_slivers(v, f)
+    slivers = result.report["slivers"]
+    assert slivers["slivers_after"] < slivers["slivers_before"]
+    assert border_cycles(result.vertices, result.faces) == 0
+
+
+def test_optimize_reduction_halves_the_faces_and_stays_closed():
+    v, f = icosphere(3)
+    result = mesh_repair.optimize(v, f, target_ratio=0.5)
+    report = result.report["optimization"]
+    assert report["input_faces"] == 1280
+    assert len(result.faces) <= 0.6 * 1280
+    assert len(result.faces) == report["output_faces"]
+    assert border_cycles(result.vertices, result.faces) == 0
+
+
+@pytest.mark.parametrize("extension", ["off", "obj", "stl", "ply"])
+def test_write_then_read_gives_the_same_mesh(tmp_path, extension):
+    v, f = icosphere(2)
+    path = tmp_path / f"sphere.{extension}"
+    written = mesh_repair.write(path, v, f)
+    assert written["faces"] == len(f)
+    back = mesh_repair.read(path)
+    assert back.faces.shape == f.shape
+    assert len(back.vertices) == len(v)  # STL repeats corners; the soup stage merges them
+    assert np.allclose(np.sort(back.vertices, axis=0), np.sort(v, axis=0), atol=1e-6)
+    assert back.report["soup_repair"]["input_polygons"] == len(f)
+    assert border_cycles(back.vertices, back.faces) == 0
+
+
+def test_path_and_arrays_give_the_same_report(tmp_path):
+    v, f = holed_sphere(3, holes=2)
+    path = tmp_path / "holed.off"
+    mesh_repair.write(path, v, f)
+    from_file = mesh_repair.check(str(path))
+    from_arrays = mesh_repair.check(v, f)
+    assert from_file["border_cycles"] == from_arrays["border_cycles"] == 2
+    assert from_file.keys() == from_arrays.keys()
+
+
+def test_list_of_polygons_is_triangulated():
+    v, _ = cube()
+    quads = [[0, 1, 3, 2], [4, 6, 7, 5], [0, 4, 5, 1], [2, 3, 7, 6], [0, 2, 6, 4], [1, 5, 7, 3]]
+    report = mesh_repair.check(v, quads)
+    assert report["closed"] is True
+    assert report["soup_repair"]["polygons_triangulated"] == 6
+    result = mesh_repair.repair(v, quads)
+    assert result.faces.shape == (12, 3)
+
+
+def test_soup_stage_merges_duplicated_points_and_removes_duplicated_faces():
+    v, f = cube()
+    v2 = np.vstack([v, v[:1]])  # vertex 8 = vertex 0
+    f2 = np.vstack([f, f[:1]])  # face 12 = face 0
+    f2[f2 == 0] = 8
+    report = mesh_repair.check(v2, f2)
+    assert report["soup_repair"]["points_merged"] >= 1
+    assert report["soup_repair"]["duplicated_polygons_removed"] == 1
+    assert report["closed"] is True
+
+
+def test_progress_callback_sees_steps_and_fractions():
+    events = []
+    mesh_repair.repair(*holed_sphere(3), progress=lambda step, fraction: events.append(
+        (step, fraction)))
+    assert events
+    assert all(isinstance(s, str) and 0.0 <= x <= 1.0 for s, x in events)
+    assert len({s for s, _ in events}) >= 2
+
+
+def test_exception_in_progress_callback_cancels_and_propagates():
+    class Stop(Exception):
+        pass
+
+    def stop(step, fraction):
+        raise Stop(step)
+
+    v, f = holed_sphere(3)
+    v_before = v.copy()
+    with pytest.raises(Stop):
+        mesh_repair.repair(v, f, progress=stop)
+    np.testing.assert_array_equal(v, v_before)
+
+
+def test_demo_mesh_with_holes_comes_out_closed(demo_mesh):
+    result = mesh_repair.repair(demo_mesh("elephant-with-holes.off"))
+    assert result.report["defects_before"]["border_cycles"] > 0
+    assert result.report["repair"]["closed"] and result.report["repair"]["valid"]
+    assert border_cycles(result.vertices, result.faces) == 0
+
+
+def test_suppress_feature_refills_a_cap_near_the_sphere():
+    v, f = icosphere(3)
+    cap = mesh_repair.faces_in_sphere(v, f, [0, 0, 1], 0.35)
+    assert len(cap) > 10
+    result = mesh_repair.suppress_feature(v, f, faces_to_remove=cap)
+    assert result.report["removed_faces"] == len(cap)
+    assert [h["filled"] for h in result.report["holes"]] == [True]
+    assert border_cycles(result.vertices, result.faces) == 0
+    top = result.vertices[result.vertices[:, 2] > 0.9]
+    assert np.all(np.abs(np.linalg.norm(top, axis=1) - 1) < 0.05)
+
+
+def cli():
+    """The mesh_repair tool of the same build, or a skip (the tests then compare only keys
+    documented in doc/python.md)."""
+    import os
+
+    build = os.environ.get("MESH_REPAIR_BUILD_DIR", "")
+    tool = os.path.join(build, "bin", "mesh_repair")
+    if not build or not os.access(tool, os.X_OK):
+        pytest.skip("the mesh_repair tool is not built beside the module")
+    return tool
+
+
+def test_reports_have_the_keys_of_the_cli_reports(tmp_path):
+    import json
+    import subprocess
+
+    tool = cli()
+    v, f = holed_sphere(3, holes=2)
+    mesh = tmp_path / "holed.off"
+    mesh_repair.write(mesh, v, f)
+    runs = {
+        "check": (["check", str(mesh), "--json"], mesh_repair.check(str(mesh))),
+        "repair": (["repair", str(mesh), "-o", str(tmp_path / "o.off"), "--report"],
+                   mesh_repair.repair(str(mesh)).report),
+        "fill": (["fill", str(mesh), "-o", str(tmp_path / "o.off"), "--report"],
+                 mesh_repair.fill_holes(str(mesh)).report),
+        "stitch": (["stitch", str(mesh), "-o", str(tmp_path / "o.off"), "--report"],
+                   mesh_repair.stitch(str(mesh)).report),
+        "slivers": (["slivers", str(mesh), "-o", str(tmp_path / "o.off"), "--report"],
+                    mesh_repair.remove_slivers(str(mesh)).report),
+        "optimize": (["optimize", str(mesh), "-o", str(tmp_path / "o.off"), "--report"],
+                     mesh_repair.optimize(str(mesh)).report),
+        "suppress": (["suppress", str(mesh), "-o", str(tmp_path / "o.off"), "--sphere",
+                      "1,0,0,0.35", "--report"],
+                     mesh_repair.suppress_feature(str(mesh), faces_to_remove=mesh_repair
+                                                  .faces_in_sphere(v, f, [1, 0, 0], 0.35)).report),
+    }
+    for command, (arguments, ours) in runs.items():
+        report = tmp_path / f"{command}.json"
+        subprocess.run([tool, *arguments, str(report), "--quiet"], check=False,
+                       stdout=subprocess.DEVNULL)
+        theirs = json.loads(report.read_text())
+        assert ours.keys() == theirs.keys(), command
+        for key, value in theirs.items():
+            if isinstance(value, dict):
+                assert ours[key].keys() == value.keys(), (command, key)
+            if isinstance(value, list) and value and isinstance(value[0], dict):
+                assert ours[key][0].keys() == value[0].keys(), (command, key)
+
+
+def test_gil_is_released_while_the_library_works():
+    """A Python thread keeps running during a repair (it could not if the GIL were held)."""
+    import threading
+    import time
+
+    v, f = holed_sphere(5, holes=3)  # about 20k faces: a fraction of a second of work
+    ticks = [0]
+    done = threading.Event()
+
+    def count():
+        while not done.is_set():
+            ticks[0] += 1
+            time.sleep(0.001)
+
+    counter = threading.Thread(target=count)
+    counter.start()
+    start = time.monotonic()
+    ticks_before = ticks[0]
+    result = mesh_repair.repair(v, f)
+    seconds = time.monotonic() - start
+    ticks_during = ticks[0] - ticks_before
+    done.set()
+    counter.join()
+    assert result.report["repair"]["closed"]
+    # At least a tick per 10 ms of repair; a held GIL would allow about one per 5 ms switch
+    # interval only between the library's progress calls, i.e. almost none.
+    assert ticks_during >= seconds / 0.01 * 0.5, (ticks_during, seconds)
+
+
+def test_two_threads_repair_two_meshes_at_once():
+    from concurrent.futures import ThreadPoolExecutor
+
+    meshes = [holed_sphere(4, holes=1), holed_sphere(4, holes=3)]
+    with ThreadPoolExecutor(2) as pool:
+        results = list(pool.map(lambda m: mesh_repair.repair(*m), meshes))
+    assert [r.report["repair"]["holes_filled"] for r in results] == [1, 3]
+    assert all(border_cycles(r.vertices, r.faces) == 0 for r in results)
