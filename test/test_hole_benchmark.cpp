@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 
+#include "scratch_folder.h"
+
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -190,7 +192,10 @@ TEST(HoleBenchmark, ErrorNormsAreOrderedE1AtMostE2AtMostEinfAfterLiepaFill) {
 
 #ifdef MESH_REPAIR_CLI
 TEST(HoleBenchmarkCli, SphereWithLiepaWritesOneResultLinePerHoleMethodAndSeed) {
-  const std::string out = std::string(::testing::TempDir()) + "bench_holes_cli";
+  // In the process's scratch folder, removed when the suite exits.
+  const std::string out =
+      (mesh_repair_test::scratch_folder("mesh_repair_test_hole_benchmark_") / "bench_holes_cli")
+          .string();
   const std::string command = std::string(MESH_REPAIR_CLI) +
                               " bench holes --analytic sphere --holes 2 --radius 0.05 --seeds "
                               "1,2 --methods liepa --no-plots --no-pictures --quiet --out " +
