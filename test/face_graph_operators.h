@@ -12,7 +12,6 @@
 #include <CGAL/Mesh_repair/detect_defects.h>
 #include <CGAL/Mesh_repair/fill_holes.h>
 #include <CGAL/Mesh_repair/generators.h>
-#include <CGAL/Mesh_repair/mesh_type_traits.h>
 #include <CGAL/Mesh_repair/mga_smooth.h>
 #include <CGAL/Mesh_repair/optimize_mesh.h>
 #include <CGAL/Mesh_repair/remove_overlaps.h>
@@ -290,27 +289,36 @@ void expect_results_of_surface_mesh() {
   }
 }
 
-/// `automatic_repair` asked to remove self-intersections on a mesh type where CGAL's
-/// `experimental::remove_self_intersections` does not compile (`Supports_self_intersection_removal`
-/// false: OpenMesh): the step is reported as not available, counted, and the repair is
-/// incomplete; the mesh stays valid and the other steps ran.
+/// A sphere whose north pole was pushed through to beyond the south pole: its faces pierce
+/// the far side.
+inline Soup sphere_with_spike() {
+  Surface_mesh sphere;
+  MR::make_sphere(sphere, Point(0, 0, 0), 1.0, 3);
+  auto top = *sphere.vertices().begin();
+  for (auto v : sphere.vertices())
+    if (sphere.point(v).z() > sphere.point(top).z()) top = v;
+  sphere.point(top) = Point(0.01, 0.02, -1.1);
+  return soup_from(sphere);
+}
+
+/// `automatic_repair` replaces the self-intersecting faces on every mesh type (it only needs
+/// Euler operations and the hole filling), with the same result as on `Surface_mesh`.
 template <class Mesh>
-void expect_self_intersection_removal_reported_unavailable() {
-  static_assert(!MR::Supports_self_intersection_removal<Mesh>::value);
-  Mesh mesh = mesh_from<Mesh>(sphere_with_holes());
-  const MR::Repair_result r = MR::automatic_repair(
-      mesh,
-      with_point_map(mesh, MR::parameters::repair_self_intersections(true).number_of_threads(1)));
-  ASSERT_EQ(r.unavailable_steps.size(), 1u);
-  EXPECT_EQ(r.unavailable_steps[0], "self-intersection removal");
-  const auto step = std::find_if(r.steps.begin(), r.steps.end(), [](const auto& s) {
-    return s.name == "self-intersection removal";
-  });
-  ASSERT_NE(step, r.steps.end());
-  EXPECT_EQ(step->count("not_available"), 1.0);
-  EXPECT_EQ(r.holes.filled, 2u);
-  EXPECT_FALSE(r.complete());
+void expect_self_intersections_removed_as_on_surface_mesh() {
+  Mesh mesh = mesh_from<Mesh>(sphere_with_spike());
+  const MR::Repair_result r =
+      MR::automatic_repair(mesh, with_point_map(mesh, MR::parameters::number_of_threads(1)));
+  Surface_mesh reference = mesh_from<Surface_mesh>(sphere_with_spike());
+  const MR::Repair_result expected =
+      MR::automatic_repair(reference, MR::parameters::number_of_threads(1));
+  EXPECT_TRUE(r.unavailable_steps.empty());
+  EXPECT_GT(r.self_intersections_input, 0u);
+  EXPECT_EQ(r.self_intersections_input, expected.self_intersections_input);
+  EXPECT_EQ(r.self_intersections_output, 0u);
+  EXPECT_EQ(expected.self_intersections_output, 0u);
+  EXPECT_TRUE(r.closed && r.valid);
   EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  EXPECT_TRUE(sorted_faces(mesh) == sorted_faces(reference)) << "the output meshes differ";
 }
 
 }  // namespace face_graph_test

@@ -232,24 +232,125 @@ Mesh sphere_with_spikes() {
   return mesh;
 }
 
-TEST(AutomaticRepair, SelfIntersectionRemovalOptionReducesTheSpikes) {
+const MR::Repair_step_report* find_step(const MR::Repair_result& result, const std::string& name) {
+  for (const auto& step : result.steps)
+    if (step.name == name) return &step;
+  return nullptr;
+}
+
+TEST(AutomaticRepair, SelfIntersectionsInsideAComponentAreReplacedByDefault) {
   Mesh mesh = sphere_with_spikes();
   const std::size_t before = self_intersection_count(mesh);
   ASSERT_GT(before, 0u);
-  const auto result = MR::automatic_repair(mesh, MR::parameters::repair_self_intersections(true));
+  const auto result = MR::automatic_repair(mesh);
   EXPECT_EQ(result.self_intersections_input, before);
-  EXPECT_LT(result.self_intersections_output, before);
-  EXPECT_EQ(result.self_intersections_output, self_intersection_count(mesh));
-  EXPECT_EQ(result.self_intersections_in_patches, 0u);
+  EXPECT_EQ(result.self_intersections_output, 0u);
+  EXPECT_EQ(self_intersection_count(mesh), 0u);
   EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
   EXPECT_TRUE(CGAL::is_closed(mesh));
-  bool reported = false;
-  for (const auto& step : result.steps) reported |= step.name == "self-intersection removal";
-  EXPECT_TRUE(reported);
+  EXPECT_TRUE(result.complete()) << (result.remaining.empty() ? "" : result.remaining.front());
+  const auto* step = find_step(result, "self-intersection removal");
+  ASSERT_NE(step, nullptr);
+  EXPECT_EQ(step->count("pairs_within_components_before"), double(before));
+  EXPECT_EQ(step->count("pairs_within_components_after"), 0.0);
+  EXPECT_GT(step->count("faces_removed"), 0.0);
+  EXPECT_GT(step->count("faces_added"), 0.0);
+  // The spikes are gone: every vertex is back near the unit sphere.
+  for (auto v : mesh.vertices())
+    EXPECT_NEAR(std::sqrt(CGAL::squared_distance(mesh.point(v), Point(0, 0, 0))), 1.0, 0.1);
 
-  Mesh untouched = sphere_with_spikes();
-  const auto without = MR::automatic_repair(untouched);
+  Mesh kept = sphere_with_spikes();
+  const auto without = MR::automatic_repair(kept, MR::parameters::repair_self_intersections(false));
   EXPECT_EQ(without.self_intersections_output, before);
+  EXPECT_EQ(find_step(without, "self-intersection removal"), nullptr);
+}
+
+// An assembly of two closed solids that pass through each other: each is a solid of its own and
+// the intersections between them are kept, nothing removed.
+TEST(AutomaticRepair, SelfIntersectionsBetweenComponentsAreKept) {
+  Mesh mesh;
+  MR::make_sphere(mesh, Point(0, 0, 0), 1.0, 3);
+  MR::make_sphere(mesh, Point(1.2, 0.1, 0), 1.0, 3);
+  const std::size_t faces = mesh.number_of_faces();
+  const std::size_t before = self_intersection_count(mesh);
+  ASSERT_GT(before, 0u);
+  const auto result = MR::automatic_repair(mesh);
+  EXPECT_EQ(result.self_intersections_output, before);
+  EXPECT_EQ(mesh.number_of_faces(), faces);
+  const auto* step = find_step(result, "self-intersection removal");
+  ASSERT_NE(step, nullptr);
+  EXPECT_EQ(step->count("pairs_between_components_kept"), double(before));
+  EXPECT_EQ(step->count("pairs_within_components_before"), 0.0);
+  EXPECT_EQ(step->count("faces_removed"), 0.0);
+}
+
+/// A sphere with a hole whose border is folded as on scans: every third border vertex is pushed
+/// away from the hole, past its outer neighbours, so that its faces fold over the surface
+/// around it (overlapping triangles along a jagged border).
+Mesh sphere_with_folded_hole_border() {
+  Mesh mesh;
+  MR::make_sphere(mesh, Point(0, 0, 0), 1.0, 4);
+  punch_hole(mesh, Point(0, 0, 1), 0.35);
+  mesh.collect_garbage();
+  const auto cycles = CGAL::Mesh_repair::internal::border_cycles(mesh);
+  std::vector<Mesh::Vertex_index> border;
+  for (auto h : halfedges_around_face(cycles.front(), mesh)) border.push_back(mesh.target(h));
+  for (std::size_t i = 0; i < border.size(); i += 3) {
+    const Point p = mesh.point(border[i]);
+    // Outwards from the hole's axis by 0.15 (about twice the edge length), back on the sphere.
+    const double r = std::hypot(p.x(), p.y());
+    const Point q(p.x() * (r + 0.15) / r, p.y() * (r + 0.15) / r, p.z());
+    const double n = std::sqrt(CGAL::squared_distance(q, Point(0, 0, 0)));
+    mesh.point(border[i]) = Point(q.x() / n, q.y() / n, q.z() / n);
+  }
+  return mesh;
+}
+
+TEST(AutomaticRepair, HolesWithFoldedBordersAreGrownAndFilled) {
+  Mesh mesh = sphere_with_folded_hole_border();
+  ASSERT_EQ(count_border_cycles(mesh), 1u);
+  const std::size_t faces_before = mesh.number_of_faces();
+  // Every method's patch meets the folded faces: plain hole filling leaves the hole open.
+  Mesh filled = mesh;
+  const auto plain = MR::fill_holes(filled);
+  ASSERT_EQ(plain.failed, 1u) << "the folded border no longer defeats plain hole filling";
+  EXPECT_EQ(filled.number_of_faces(), faces_before);
+
+  const auto result = MR::automatic_repair(mesh);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  EXPECT_TRUE(CGAL::is_closed(mesh));
+  EXPECT_EQ(result.holes.failed, 0u);
+  EXPECT_EQ(self_intersection_count(mesh), 0u);
+  const auto* grown = find_step(result, "failed holes grown");
+  ASSERT_NE(grown, nullptr);
+  EXPECT_EQ(grown->count("still_failed"), 0.0);
+  EXPECT_GT(grown->count("faces_removed"), 0.0);
+  ASSERT_EQ(result.holes.holes.size(), 1u);
+  EXPECT_TRUE(result.holes.holes[0].filled);
+  ASSERT_FALSE(result.holes.holes[0].notes.empty());
+  // The patch follows the sphere.
+  for (auto v : mesh.vertices())
+    EXPECT_NEAR(std::sqrt(CGAL::squared_distance(mesh.point(v), Point(0, 0, 0))), 1.0, 0.05);
+}
+
+// A hole that no growth can fill gets its removed faces back: nothing is lost.
+TEST(AutomaticRepair, AGrownHoleThatStaysOpenGetsItsFacesBack) {
+  Mesh mesh = overlapping_spheres_with_facing_holes();
+  const std::size_t faces_before = mesh.number_of_faces();
+  const auto result = MR::automatic_repair(mesh, MR::parameters::repair_self_intersections(false));
+  ASSERT_GE(result.holes.failed, 1u);
+  const auto* grown = find_step(result, "failed holes grown");
+  ASSERT_NE(grown, nullptr);
+  EXPECT_EQ(grown->count("faces_not_restored"), 0.0);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  // Faces of the input + the patches kept - the faces of replaced regions: those of the regions
+  // put back are all there.
+  const auto* filling = find_step(result, "hole filling");
+  ASSERT_NE(filling, nullptr);
+  EXPECT_EQ(double(mesh.number_of_faces()), double(faces_before) + filling->count("faces_added") +
+                                                grown->count("faces_added") -
+                                                grown->count("faces_removed"));
+  EXPECT_EQ(count_border_cycles(mesh), result.holes.failed);
 }
 
 TEST(FillHoles, APatchMeetingAnotherPartOfTheMeshIsRolledBack) {

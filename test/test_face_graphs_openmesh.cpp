@@ -36,16 +36,16 @@ TEST(FaceGraphs, OpenMeshPolyMeshGivesTheResultsOfSurfaceMesh) {
   face_graph_test::expect_results_of_surface_mesh<PolyMesh>();
 }
 
-TEST(FaceGraphs, OpenMeshPolyMeshReportsSelfIntersectionRemovalUnavailable) {
-  face_graph_test::expect_self_intersection_removal_reported_unavailable<PolyMesh>();
+TEST(FaceGraphs, OpenMeshPolyMeshRemovesSelfIntersectionsAsSurfaceMesh) {
+  face_graph_test::expect_self_intersections_removed_as_on_surface_mesh<PolyMesh>();
 }
 
 TEST(FaceGraphs, OpenMeshTriMeshGivesTheResultsOfSurfaceMesh) {
   face_graph_test::expect_results_of_surface_mesh<TriMesh>();
 }
 
-TEST(FaceGraphs, OpenMeshTriMeshReportsSelfIntersectionRemovalUnavailable) {
-  face_graph_test::expect_self_intersection_removal_reported_unavailable<TriMesh>();
+TEST(FaceGraphs, OpenMeshTriMeshRemovesSelfIntersectionsAsSurfaceMesh) {
+  face_graph_test::expect_self_intersections_removed_as_on_surface_mesh<TriMesh>();
 }
 
 }  // namespace

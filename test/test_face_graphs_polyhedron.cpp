@@ -16,10 +16,6 @@ using Polyhedron = CGAL::Polyhedron_3<face_graph_test::Kernel>;
 using Polyhedron_with_ids =
     CGAL::Polyhedron_3<face_graph_test::Kernel, CGAL::Polyhedron_items_with_id_3>;
 
-// CGAL's experimental::remove_self_intersections compiles on Polyhedron_3: automatic_repair runs
-// it when asked (mesh_type_traits.h).
-static_assert(CGAL::Mesh_repair::Supports_self_intersection_removal<Polyhedron>::value);
-static_assert(CGAL::Mesh_repair::Supports_self_intersection_removal<Polyhedron_with_ids>::value);
 
 TEST(FaceGraphs, PolyhedronGivesTheResultsOfSurfaceMesh) {
   face_graph_test::expect_results_of_surface_mesh<Polyhedron>();
@@ -27,6 +23,14 @@ TEST(FaceGraphs, PolyhedronGivesTheResultsOfSurfaceMesh) {
 
 TEST(FaceGraphs, PolyhedronWithIdsGivesTheResultsOfSurfaceMesh) {
   face_graph_test::expect_results_of_surface_mesh<Polyhedron_with_ids>();
+}
+
+TEST(FaceGraphs, PolyhedronRemovesSelfIntersectionsAsSurfaceMesh) {
+  face_graph_test::expect_self_intersections_removed_as_on_surface_mesh<Polyhedron>();
+}
+
+TEST(FaceGraphs, PolyhedronWithIdsRemovesSelfIntersectionsAsSurfaceMesh) {
+  face_graph_test::expect_self_intersections_removed_as_on_surface_mesh<Polyhedron_with_ids>();
 }
 
 }  // namespace

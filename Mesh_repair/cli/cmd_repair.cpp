@@ -45,8 +45,10 @@ const char* const repair_help =
     "  --keep-components        keep every connected component (default)\n"
     "  --largest-component      keep only the largest component (removed ones are counted)\n"
     "  --no-ring-holes          fill islands and their hole separately\n"
-    "  --no-self-intersections  do not count self-intersections (faster)\n"
-    "  --remove-self-intersections  run CGAL's experimental local self-intersection removal\n"
+    "  --no-self-intersections  neither count nor remove self-intersections (faster)\n"
+    "  --keep-self-intersections  keep the input's self-intersections (default: the faces\n"
+    "                           intersecting others of their component are replaced by checked\n"
+    "                           patches; intersections between components are always kept)\n"
     "  --threads N              threads for independent holes (default: all cores)\n"
     "  --seed S                 seed of the randomised methods (default 0)\n"
     "  --binary                 binary STL/PLY output\n"
@@ -66,6 +68,7 @@ const std::set<std::string> repair_flags = {"--keep-components",
                                             "--no-ring-holes",
                                             "--no-self-intersections",
                                             "--remove-self-intersections",
+                                            "--keep-self-intersections",
                                             "--fill-sheet-borders",
                                             "--binary",
                                             "--quiet"};
@@ -219,7 +222,8 @@ int repair_one(const Arguments& args) {
                 .keep_largest_component(args.has("--largest-component"))
                 .detect_ring_holes(!args.has("--no-ring-holes"))
                 .detect_self_intersections(!args.has("--no-self-intersections"))
-                .repair_self_intersections(args.has("--remove-self-intersections"))
+                .repair_self_intersections(!args.has("--keep-self-intersections") &&
+                                           !args.has("--no-self-intersections"))
                 .number_of_threads(int(threads))
                 .random_seed(unsigned(args.get_int("--seed", 0)))
                 .visitor(std::ref(progress)));

@@ -150,13 +150,15 @@ def check(vertices, faces=None, *, tolerance=None, tolerance_rel=None, self_inte
 def repair(vertices, faces=None, *, tolerance=None, tolerance_rel=None, fill="self_validated",
            continuity=1, max_hole_size=None, max_hole_edges=None, sheet_border_ratio=0.9,
            fill_sheet_borders=False, largest_component=False, ring_holes=True,
-           self_intersections=True, remove_self_intersections=False, threads=0, seed=0,
+           self_intersections=True, remove_self_intersections=True, threads=0, seed=0,
            progress=None):
     """The automatic repair pipeline (``mesh_repair repair``): soup repair and orientation,
     stitching of gaps and overlaps, T-junctions, degenerate faces, hole filling, verification.
     Options as the CLI's (``mesh_repair repair --help``): ``fill`` one of ``FILL_METHODS``,
     ``continuity`` 0-2 (Liepa fairing), ``max_hole_size`` (fraction of the bounding-box
-    diagonal) and ``max_hole_edges`` leave larger holes open, ``threads`` 0 = all cores.
+    diagonal) and ``max_hole_edges`` leave larger holes open, ``threads`` 0 = all cores,
+    ``remove_self_intersections`` replaces the faces that intersect others of their component
+    by checked patches (``self_intersections=False`` neither counts nor removes them).
     Returns a ``Result``; the report holds ``soup_repair``, ``defects_before``,
     ``defects_after`` and ``repair``."""
     options = _tolerance({}, tolerance, tolerance_rel)

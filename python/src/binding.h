@@ -99,7 +99,7 @@ struct Repair_options {
   long long max_hole_edges = -1;  ///< negative: no limit
   double sheet_border_ratio = 0.9;
   bool largest_component = false, ring_holes = true, self_intersections = true;
-  bool remove_self_intersections = false;
+  bool remove_self_intersections = true;
   int threads = 0;
   unsigned seed = 0;
 };

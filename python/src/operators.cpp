@@ -223,7 +223,8 @@ Operator_output repair(Mesh_input& input, const Repair_options& options, Python_
                 .keep_largest_component(options.largest_component)
                 .detect_ring_holes(options.ring_holes)
                 .detect_self_intersections(options.self_intersections)
-                .repair_self_intersections(options.remove_self_intersections)
+                .repair_self_intersections(options.remove_self_intersections &&
+                                           options.self_intersections)
                 .number_of_threads(options.threads)
                 .random_seed(options.seed)
                 .visitor(std::ref(visitor)));

@@ -47,8 +47,9 @@ Repair_options repair_options_from(const PolygonMesh& pm, const NamedParameters&
 /// removal of duplicated and overlapping coplanar faces, non-manifold vertices (CGAL), degenerate
 /// faces (CGAL) and slivers (thesis 4.5), optionally all but the largest component, hole-contour
 /// cleaning (Pernot 4), hole filling (one method per hole, with fallbacks; holes over the size
-/// limits are left open and reported), optionally CGAL's local removal of self-intersections,
-/// and a verification (valid, manifold, closed, self-intersections in and around the patches).
+/// limits are left open and reported; holes whose every patch was rejected are grown by rings
+/// of faces and filled again), replacement of the faces that intersect others of their
+/// component, and a verification (valid, manifold, closed, self-intersections in and around the patches).
 ///
 /// Every step is timed and counted in the result; nothing is removed without being counted.
 /// `pm` is valid after the call even when a step fails or the visitor cancels.
@@ -125,9 +126,12 @@ Repair_options repair_options_from(const PolygonMesh& pm, const NamedParameters&
 ///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{repair_self_intersections}
-///     \cgalParamDescription{run CGAL's `experimental::remove_self_intersections` on the result}
+///     \cgalParamDescription{replace the faces that intersect another face of their connected
+///       component, with the faces within 1 then 2 vertex rings, by checked Liepa patches (all
+///       or nothing per region); intersections between components are kept (doc:
+///       automatic_repair.md, "Self-intersections")}
 ///     \cgalParamType{bool}
-///     \cgalParamDefault{`false`}
+///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_threads}
 ///     \cgalParamDescription{threads of TBB's pool during the call: the self-intersection

@@ -72,7 +72,7 @@ MESH_REPAIR_PARAMETER(number_of_threads)
 
 // automatic repair
 MESH_REPAIR_PARAMETER(keep_largest_component)     // bool: drop all but the largest component
-MESH_REPAIR_PARAMETER(repair_self_intersections)  // bool: CGAL's experimental local removal
+MESH_REPAIR_PARAMETER(repair_self_intersections)  // bool: replace self-intersecting faces
 
 // hole benchmark (hole_benchmark.h)
 MESH_REPAIR_PARAMETER(number_of_holes)  // holes punched per mesh

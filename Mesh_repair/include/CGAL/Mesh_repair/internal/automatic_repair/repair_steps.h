@@ -6,10 +6,10 @@
 // The steps of automatic_repair, one function each, in the order of thesis Figure 3.2.
 
 #include <CGAL/Mesh_repair/fill_holes.h>
+#include <CGAL/Mesh_repair/internal/automatic_repair/region_replacement.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/border_cycles.h>
 #include <CGAL/Mesh_repair/internal/mesh_counts.h>
 #include <CGAL/Mesh_repair/internal/stitching/run_gap_stitcher.h>
-#include <CGAL/Mesh_repair/mesh_type_traits.h>
 #include <CGAL/Mesh_repair/repair_result.h>
 #include <CGAL/Mesh_repair/visitor.h>
 
@@ -17,7 +17,6 @@
 #include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/repair_degeneracies.h>
-#include <CGAL/Polygon_mesh_processing/repair_self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/stitch_borders.h>
 #include <CGAL/Polygon_mesh_processing/shape_predicates.h>
@@ -34,8 +33,11 @@
 #include <iterator>
 #include <limits>
 #include <memory>
+#include <map>
 #include <set>
 #include <sstream>
+#include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 namespace CGAL {
@@ -48,9 +50,21 @@ struct Repair_options {
   bool use_cubic_curves = true;
   bool keep_largest_component = false;
   bool detect_self_intersections = true;
-  bool repair_self_intersections = false;
+  bool repair_self_intersections = true;
   Fill_options fill;
 };
+
+/// Failed holes are grown by 1, 2, then 3 vertex rings (step_grow_failed_holes).
+constexpr int max_hole_growth_rings = 3;
+/// Holes with more border edges are not grown: growing is for the small holes of scanned
+/// borders, and Liepa's triangulation of a long border is cubic in its length.
+constexpr std::size_t max_grown_hole_edges = 300;
+/// Self-intersecting faces are removed with 1, then 2 vertex rings
+/// (step_remove_self_intersections).
+constexpr int max_self_intersection_rings = 2;
+/// Past this fraction of the faces, self-intersecting faces are not removed: the mesh is not a
+/// surface with local defects, and replacing most of it would lose its shape.
+constexpr double max_self_intersecting_face_fraction = 0.2;
 
 /// Times a step, reports it to the visitor (balanced start/end, also on cancellation) and
 /// records it in the result.
@@ -308,46 +322,234 @@ void step_largest_component(PolygonMesh& pm, Repair_result& result, Any_visitor 
   timer.count("faces_removed", double(result.faces_removed_with_components));
 }
 
+/// The filling of the regions that automatic_repair removes (grown holes, self-intersections):
+/// CGAL's Liepa triangulation and fairing, which takes milliseconds on such holes, where the
+/// other methods' fallbacks take seconds on the holes they cannot fill.
+inline Fill_options replacement_fill_options(const Fill_options& fill) {
+  Fill_options options = fill;
+  options.method = Fill_method::liepa;
+  return options;
+}
+
+/// One round of region replacement with `replacement_fill_options`; adds its counts to `total`.
+template <class PolygonMesh, class VertexPointMap, class GeomTraits>
+Region_replacement_report replace_regions(
+    PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits, const Repair_options& options,
+    Any_visitor visitor,
+    const std::vector<std::vector<typename boost::graph_traits<PolygonMesh>::face_descriptor>>&
+        regions,
+    Region_replacement_report& total) {
+  const Fill_options fill = replacement_fill_options(options.fill);
+  Region_replacer<PolygonMesh, VertexPointMap, GeomTraits> replacer(pm, vpm, traits, fill, visitor);
+  const Region_replacement_report round = replacer.replace(regions);
+  total.regions_replaced += round.regions_replaced;
+  total.faces_removed += round.faces_removed;
+  total.faces_added += round.faces_added;
+  total.faces_not_restored += round.faces_not_restored;
+  return round;
+}
+
+/// The vertices of the cycles of `group`.
+template <class PolygonMesh, class Group>
+std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor> group_vertices(
+    const PolygonMesh& pm, const Group& group) {
+  std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor> vertices;
+  auto add = [&](auto cycle) {
+    for (auto h : halfedges_around_face(cycle, pm)) vertices.push_back(target(h, pm));
+  };
+  add(group.outer);
+  for (auto island : group.islands) add(island);
+  return vertices;
+}
+
+/// Holes whose every patch was rejected (on scans: folded, overlapping and needle faces along a
+/// jagged border make every patch meet the border's own faces) are grown by the faces within
+/// 1, then 2, then 3 vertex rings of their border and filled again; a grown hole that still
+/// cannot be filled gets its faces back (Region_replacer). `failed` holds the indices of
+/// `result.holes.holes` whose groups are `groups`.
+template <class PolygonMesh, class VertexPointMap, class GeomTraits, class Group>
+void step_grow_failed_holes(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
+                            const Repair_options& options, const std::vector<Group>& groups,
+                            Any_visitor visitor, Repair_result& result) {
+  using Point = typename boost::property_traits<VertexPointMap>::value_type;
+  using face_descriptor = typename boost::graph_traits<PolygonMesh>::face_descriptor;
+  std::vector<std::size_t> failed;
+  std::vector<Point> keys;
+  for (std::size_t k = 0; k < result.holes.holes.size(); ++k) {
+    const Hole_fill_report& hole = result.holes.holes[k];
+    if (hole.filled || hole.skipped) continue;
+    if (hole.border_edges > max_grown_hole_edges) continue;
+    failed.push_back(k);
+    // The exact position of a border vertex finds the hole again after its halfedges were
+    // removed and put back.
+    keys.push_back(get(vpm, target(groups[k].outer, pm)));
+  }
+  if (failed.empty()) return;
+  Step_timer timer(result, "failed holes grown", visitor);
+  timer.count("holes", double(failed.size()));
+  Region_replacement_report total;
+  for (int rings = 1; rings <= max_hole_growth_rings && !failed.empty(); ++rings) {
+    // The groups again: a grown hole put back has new halfedges; its key point finds it.
+    std::map<Point, Group> group_at;
+    for (const Group& group : hole_groups(pm, vpm, options.fill.detect_ring_holes))
+      for (auto h : halfedges_around_face(group.outer, pm))
+        group_at.emplace(get(vpm, target(h, pm)), group);
+    std::vector<std::vector<face_descriptor>> regions;
+    std::vector<std::size_t> in_round;
+    for (std::size_t i = 0; i < failed.size(); ++i) {
+      auto it = group_at.find(keys[i]);
+      if (it == group_at.end()) continue;
+      regions.push_back(faces_within_rings(pm, group_vertices(pm, it->second), rings));
+      in_round.push_back(i);
+    }
+    const Region_replacement_report round =
+        replace_regions(pm, vpm, traits, options, visitor, regions, total);
+    std::vector<std::size_t> still_failed;
+    std::vector<Point> still_keys;
+    std::vector<bool> done(failed.size(), false);
+    for (std::size_t j = 0; j < in_round.size(); ++j) done[in_round[j]] = round.replaced[j];
+    std::size_t filled_now = 0;
+    for (std::size_t i = 0; i < failed.size(); ++i) {
+      Hole_fill_report& hole = result.holes.holes[failed[i]];
+      if (!done[i]) {
+        still_failed.push_back(failed[i]);
+        still_keys.push_back(keys[i]);
+        continue;
+      }
+      hole.notes.push_back("filled after removing the faces within " + std::to_string(rings) +
+                           " vertex ring(s) of its border: " + hole.failure);
+      hole.failure.clear();
+      hole.filled = true;
+      --result.holes.failed;
+      ++result.holes.filled;
+      ++filled_now;
+    }
+    timer.count("filled_with_rings_" + std::to_string(rings), double(filled_now));
+    failed.swap(still_failed);
+    keys.swap(still_keys);
+  }
+  timer.count("faces_removed", double(total.faces_removed));
+  timer.count("faces_added", double(total.faces_added));
+  timer.count("still_failed", double(failed.size()));
+  if (total.faces_not_restored > 0) {
+    timer.count("faces_not_restored", double(total.faces_not_restored));
+    timer.step().notes.push_back(std::to_string(total.faces_not_restored) +
+                                 " face(s) around holes that stayed open could not be put back");
+  }
+}
+
 template <class PolygonMesh, class VertexPointMap, class GeomTraits>
 void step_fill_holes(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
                      const Repair_options& options, Any_visitor visitor, Repair_result& result) {
-  Step_timer timer(result, "hole filling", visitor);
   const std::size_t faces_before = count_faces(pm), vertices_before = count_vertices(pm);
-  std::vector<Fill_patch<PolygonMesh>> patches;
-  result.holes = fill_holes_with_options(pm, vpm, traits, options.fill, visitor, patches);
-  result.sheet_borders_left_open = result.holes.sheet_borders;
-  result.holes_too_large = result.holes.skipped - result.holes.sheet_borders;
-  if (result.holes.cancelled) result.cancelled = true;
-  timer.count("holes", double(result.holes.holes.size()));
-  timer.count("filled", double(result.holes.filled));
-  timer.count("failed", double(result.holes.failed));
-  timer.count("left_open_too_large", double(result.holes_too_large));
-  timer.count("left_open_sheet_borders", double(result.sheet_borders_left_open));
-  timer.count("faces_added", double(count_faces(pm)) - double(faces_before));
-  timer.count("vertices_added", double(count_vertices(pm)) - double(vertices_before));
+  const auto groups = hole_groups(pm, vpm, options.fill.detect_ring_holes);
+  {
+    Step_timer timer(result, "hole filling", visitor);
+    std::vector<Fill_patch<PolygonMesh>> patches;
+    result.holes = fill_hole_groups(pm, vpm, traits, groups, patches, options.fill, visitor, true);
+    result.sheet_borders_left_open = result.holes.sheet_borders;
+    result.holes_too_large = result.holes.skipped - result.holes.sheet_borders;
+    if (result.holes.cancelled) result.cancelled = true;
+    timer.count("holes", double(result.holes.holes.size()));
+    timer.count("filled", double(result.holes.filled));
+    timer.count("failed", double(result.holes.failed));
+    timer.count("left_open_too_large", double(result.holes_too_large));
+    timer.count("left_open_sheet_borders", double(result.sheet_borders_left_open));
+    timer.count("faces_added", double(count_faces(pm)) - double(faces_before));
+    timer.count("vertices_added", double(count_vertices(pm)) - double(vertices_before));
+  }
+  if (!result.cancelled) step_grow_failed_holes(pm, vpm, traits, options, groups, visitor, result);
 }
 
-template <class PolygonMesh, class VertexPointMap>
-void step_remove_self_intersections(PolygonMesh& pm, VertexPointMap vpm, Repair_result& result,
-                                    Any_visitor visitor) {
+/// The connected component (by edges) of every face.
+template <class PolygonMesh>
+std::unordered_map<typename boost::graph_traits<PolygonMesh>::face_descriptor, std::size_t>
+face_components(const PolygonMesh& pm) {
+  using face_descriptor = typename boost::graph_traits<PolygonMesh>::face_descriptor;
+  std::unordered_map<face_descriptor, std::size_t> component;
+  std::size_t next = 0;
+  for (face_descriptor seed : faces(pm)) {
+    if (component.count(seed)) continue;
+    std::vector<face_descriptor> stack{seed};
+    component.emplace(seed, next);
+    while (!stack.empty()) {
+      const face_descriptor f = stack.back();
+      stack.pop_back();
+      for (auto h : halfedges_around_face(halfedge(f, pm), pm)) {
+        const auto g = face(opposite(h, pm), pm);
+        if (g != boost::graph_traits<PolygonMesh>::null_face() && component.emplace(g, next).second)
+          stack.push_back(g);
+      }
+    }
+    ++next;
+  }
+  return component;
+}
+
+/// Self-intersections inside one connected component are removed: the intersecting faces and
+/// the faces within 1, then 2 vertex rings are replaced by checked patches (Region_replacer),
+/// all or nothing per region. Intersections between two components (an assembly of touching
+/// solids) are kept: each part stays a solid of its own and nothing is lost (doc:
+/// automatic_repair.md, "Self-intersections").
+template <class PolygonMesh, class VertexPointMap, class GeomTraits>
+void step_remove_self_intersections(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
+                                    const Repair_options& options, Any_visitor visitor,
+                                    Repair_result& result) {
+  using face_descriptor = typename boost::graph_traits<PolygonMesh>::face_descriptor;
+  using vertex_descriptor = typename boost::graph_traits<PolygonMesh>::vertex_descriptor;
   Step_timer timer(result, "self-intersection removal", visitor);
-  const std::size_t faces_before = count_faces(pm);
-  timer.count("faces_before", double(faces_before));
-  // Instantiated only where CGAL's function compiles (mesh_type_traits.h); elsewhere the step
-  // is reported as not available, and the repair as incomplete (list_remaining).
-  if constexpr (Supports_self_intersection_removal<PolygonMesh>::value) {
-    const bool solved = CGAL::Polygon_mesh_processing::experimental::remove_self_intersections(
-        pm, CGAL::parameters::vertex_point_map(vpm).preserve_genus(true));
-    timer.count("faces_after", double(count_faces(pm)));
-    if (!solved) timer.step().notes.push_back("CGAL could not remove every self-intersection");
-  } else {
-    (void)vpm;
-    timer.count("not_available", 1);
-    timer.count("faces_after", double(faces_before));
-    timer.step().notes.push_back(
-        "not available for this mesh type: CGAL's experimental::remove_self_intersections does "
-        "not compile for it (Supports_self_intersection_removal)");
-    result.unavailable_steps.push_back("self-intersection removal");
+  auto within_component_pairs = [&](std::size_t& between) {
+    std::vector<std::pair<face_descriptor, face_descriptor>> pairs, within;
+    CGAL::Polygon_mesh_processing::self_intersections(pm, std::back_inserter(pairs));
+    const auto component = face_components(pm);
+    between = 0;
+    for (const auto& pair : pairs) {
+      if (component.at(pair.first) == component.at(pair.second))
+        within.push_back(pair);
+      else
+        ++between;
+    }
+    return within;
+  };
+  std::size_t between = 0;
+  auto pairs = within_component_pairs(between);
+  timer.count("pairs_within_components_before", double(pairs.size()));
+  timer.count("pairs_between_components_kept", double(between));
+  std::unordered_set<face_descriptor> involved;
+  for (const auto& pair : pairs) involved.insert({pair.first, pair.second});
+  if (double(involved.size()) > max_self_intersecting_face_fraction * double(count_faces(pm))) {
+    timer.step().notes.push_back(std::to_string(involved.size()) +
+                                 " self-intersecting faces, over " +
+                                 std::to_string(int(100 * max_self_intersecting_face_fraction)) +
+                                 "% of the faces: not removed");
+    timer.count("pairs_within_components_after", double(pairs.size()));
+    return;
+  }
+  Region_replacement_report total;
+  for (int rings = 1; rings <= max_self_intersection_rings && !pairs.empty(); ++rings) {
+    if (!visitor.progress(0.5 * (rings - 1))) {
+      result.cancelled = true;
+      break;
+    }
+    std::vector<std::vector<face_descriptor>> regions;
+    for (const auto& pair : pairs) {
+      std::vector<vertex_descriptor> seeds;
+      for (face_descriptor f : {pair.first, pair.second})
+        for (vertex_descriptor v : vertices_around_face(halfedge(f, pm), pm)) seeds.push_back(v);
+      regions.push_back(faces_within_rings(pm, seeds, rings));
+    }
+    replace_regions(pm, vpm, traits, options, visitor, regions, total);
+    pairs = within_component_pairs(between);
+  }
+  timer.count("regions_replaced", double(total.regions_replaced));
+  timer.count("faces_removed", double(total.faces_removed));
+  timer.count("faces_added", double(total.faces_added));
+  timer.count("pairs_within_components_after", double(pairs.size()));
+  if (total.faces_not_restored > 0) {
+    timer.count("faces_not_restored", double(total.faces_not_restored));
+    timer.step().notes.push_back(std::to_string(total.faces_not_restored) +
+                                 " face(s) of regions that could not be refilled could not be put "
+                                 "back");
   }
 }
 
@@ -437,7 +639,7 @@ Repair_result run_repair_pipeline(PolygonMesh& pm, VertexPointMap vpm, const Geo
     step_largest_component(pm, result, visitor);
   if (!result.cancelled) step_fill_holes(pm, vpm, traits, options, visitor, result);
   if (!result.cancelled && options.repair_self_intersections)
-    step_remove_self_intersections(pm, vpm, result, visitor);
+    step_remove_self_intersections(pm, vpm, traits, options, visitor, result);
   step_verify(pm, options, result, visitor);
   list_remaining(result);
   return result;
