@@ -4,6 +4,7 @@
 
 #include <CGAL/Mesh_repair/file_safety.h>
 #include <CGAL/Mesh_repair/io.h>
+#include <CGAL/Mesh_repair/repair_result.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 
 #include <fcntl.h>
@@ -51,6 +52,17 @@ Arguments::Arguments(const std::vector<std::string>& args, const std::set<std::s
     } else {
       positional_.push_back(a);
     }
+  }
+}
+
+int exit_status(CGAL::Mesh_repair::Repair_status status) {
+  switch (status) {
+    case CGAL::Mesh_repair::Repair_status::complete:
+      return exit_success;
+    case CGAL::Mesh_repair::Repair_status::complete_except_kept:
+      return exit_complete_except_kept;
+    default:
+      return exit_incomplete;
   }
 }
 

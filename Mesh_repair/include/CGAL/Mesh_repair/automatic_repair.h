@@ -9,6 +9,7 @@
 /// doc/automatic_repair.md.
 
 #include <CGAL/Mesh_repair/repair_result.h>
+#include <CGAL/Mesh_repair/internal/automatic_repair/coincident_elements.h>
 #include <CGAL/Mesh_repair/internal/automatic_repair/repair_steps.h>
 #include <CGAL/Mesh_repair/parameters.h>
 #include <CGAL/Mesh_repair/visitor.h>
@@ -160,8 +161,8 @@ Repair_result automatic_repair(PolygonMesh& pm,
   const GeomTraits traits =
       choose_parameter<GeomTraits>(get_parameter(np, CGAL::internal_np::geom_traits));
   internal::Visitor_parameter<NamedParameters> visitor(np);
-  return internal::run_repair_pipeline(pm, vpm, traits, internal::repair_options_from(pm, np),
-                                       visitor.get());
+  return internal::run_automatic_repair(pm, vpm, traits, internal::repair_options_from(pm, np),
+                                        visitor.get());
 }
 
 }  // namespace Mesh_repair
@@ -179,6 +180,12 @@ extern
     template Repair_result
     run_repair_pipeline<Core_mesh, Core_vpm, Core_traits>(Core_mesh&, Core_vpm, const Core_traits&,
                                                           const Repair_options&, Any_visitor);
+#ifndef CGAL_MESH_REPAIR_INSTANTIATE_AUTOMATIC_REPAIR
+extern
+#endif
+    template Repair_result
+    run_automatic_repair<Core_mesh, Core_vpm, Core_traits>(Core_mesh&, Core_vpm, const Core_traits&,
+                                                           const Repair_options&, Any_visitor);
 }  // namespace internal
 }  // namespace Mesh_repair
 }  // namespace CGAL
