@@ -84,7 +84,7 @@ Soup sheet(int n) {
   return s;
 }
 
-struct Run {
+struct Repair_run {
   int status = -1;
   std::string out;
   Cgal_reading reading;
@@ -93,8 +93,8 @@ struct Run {
 
 /// `mesh_repair repair IN -o OUT --report R [options]`, then CGAL's reading of OUT checked
 /// against R.
-Run repair(const std::string& name, const Soup& input, const std::string& options = "",
-           const std::string& extension = ".off") {
+Repair_run repair(const std::string& name, const Soup& input, const std::string& options = "",
+                  const std::string& extension = ".off") {
   const fs::path in = scratch(name + ".in.off"), out = scratch(name + ".out" + extension),
                  report = scratch(name + ".report.json"), log = scratch(name + ".log");
   input.write_off(in);
@@ -102,7 +102,7 @@ Run repair(const std::string& name, const Soup& input, const std::string& option
                               in.string() + " -o " + out.string() + " --report " + report.string() +
                               " --quiet " + options + " >" + log.string() + " 2>&1";
   const int raw = std::system(command.c_str());
-  Run run;
+  Repair_run run;
   run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
   run.out = mesh_repair_test::file_text(log.string());
   run.reading = mesh_repair_test::read_like_cgal(out.string());
@@ -111,7 +111,7 @@ Run repair(const std::string& name, const Soup& input, const std::string& option
   return run;
 }
 
-std::string repair_member(const Run& run, const std::string& key) {
+std::string repair_member(const Repair_run& run, const std::string& key) {
   return mesh_repair_test::member_value(mesh_repair_test::member_object(run.report, "repair"), key);
 }
 
@@ -121,7 +121,7 @@ TEST(RealWorld, TwoQuadsSharingThreeVertices) {
   Soup quads;
   quads.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {-0.33, 0.31, 0.49}, {-0.35, 0.27, -0.91}};
   quads.faces = {{0, 1, 2, 3}, {4, 0, 2, 1}};
-  const Run run = repair("two_quads", quads);
+  const Repair_run run = repair("two_quads", quads);
   EXPECT_EQ(run.reading.duplicated_polygons, 0u) << run.out;
   Soup other;
   other.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {1, 1, 1}};
@@ -134,7 +134,7 @@ TEST(RealWorld, TwoCubesTouchingAlongAFace) {
   for (bool flip : {false, true}) {
     Soup cubes = cube(0, 0, 0);
     cubes.add(cube(0, 0, 1, 1, flip));
-    const Run run = repair(flip ? "cubes_face_flipped" : "cubes_face", cubes);
+    const Repair_run run = repair(flip ? "cubes_face_flipped" : "cubes_face", cubes);
     EXPECT_EQ(run.reading.duplicated_polygons, 0u) << run.out;
   }
 }
@@ -144,13 +144,13 @@ TEST(RealWorld, TwoCubesTouchingAlongAFace) {
 TEST(RealWorld, TwoCubesTouchingAlongAnEdgeOrAtACorner) {
   Soup edge = cube(0, 0, 0);
   edge.add(cube(1, 0, 1));
-  const Run along_edge = repair("cubes_edge", edge);
+  const Repair_run along_edge = repair("cubes_edge", edge);
   EXPECT_FALSE(along_edge.reading.manifold);
   EXPECT_EQ(along_edge.status, 1) << along_edge.out;
   EXPECT_NE(along_edge.out.find("non-manifold"), std::string::npos) << along_edge.out;
   Soup corner = cube(0, 0, 0);
   corner.add(cube(1, 1, 1));
-  const Run at_corner = repair("cubes_corner", corner);
+  const Repair_run at_corner = repair("cubes_corner", corner);
   EXPECT_FALSE(at_corner.reading.manifold);
   EXPECT_EQ(at_corner.status, 1) << at_corner.out;
 }
@@ -162,7 +162,7 @@ TEST(RealWorld, CubeWithADuplicatedVertex) {
   for (std::size_t f = 0; f < c.faces.size(); f += 2)
     for (auto& i : c.faces[f])
       if (i == 7) i = 8;
-  const Run run = repair("cube_duplicated_vertex", c);
+  const Repair_run run = repair("cube_duplicated_vertex", c);
   EXPECT_EQ(run.status, 0) << run.out;
   EXPECT_TRUE(run.reading.closed);
   EXPECT_EQ(run.reading.coincident_points, 0u);
@@ -174,16 +174,15 @@ TEST(RealWorld, CubeWithADuplicatedVertex) {
 // sheet_border_ratio.
 TEST(RealWorld, OpenMeshesWithHoles) {
   Soup open = cube(0, 0, 0);
-  open.faces.erase(open.faces.begin() + 2, open.faces.begin() + 4);
-  open.faces.erase(open.faces.begin() + 4, open.faces.begin() + 6);
-  const Run filled = repair("cube_two_holes", open);
+  open.faces.erase(open.faces.begin(), open.faces.begin() + 4);  // bottom and top
+  const Repair_run filled = repair("cube_two_holes", open);
   EXPECT_EQ(filled.status, 0) << filled.out;
   EXPECT_TRUE(filled.reading.closed);
-  const Run limited = repair("cube_two_holes_limited", open, "--max-hole-edges 3");
+  const Repair_run limited = repair("cube_two_holes_limited", open, "--max-hole-edges 3");
   EXPECT_EQ(limited.status, 3) << limited.out;
   EXPECT_EQ(limited.reading.border_cycles, 2u);
   EXPECT_EQ(repair_member(limited, "status"), "complete_except_kept");
-  const Run flat = repair("open_sheet", sheet(6));
+  const Repair_run flat = repair("open_sheet", sheet(6));
   EXPECT_EQ(flat.status, 3) << flat.out;
   EXPECT_EQ(flat.reading.border_cycles, 1u);
 }

@@ -157,8 +157,9 @@ class Coincident_elements {
     std::vector<face_descriptor> seen;
     for (vertex_descriptor v : vertices_at_[p])
       for (halfedge_descriptor h : halfedges_around_target(v, pm_)) {
-        if (is_border(h, pm_)) continue;
-        if (position(source(h, pm_)) == q) seen.push_back(face(h, pm_));
+        if (position(source(h, pm_)) != q) continue;
+        if (!is_border(h, pm_)) seen.push_back(face(h, pm_));
+        if (!is_border(opposite(h, pm_), pm_)) seen.push_back(face(opposite(h, pm_), pm_));
       }
     std::sort(seen.begin(), seen.end());
     return std::size_t(std::unique(seen.begin(), seen.end()) - seen.begin());
