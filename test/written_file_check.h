@@ -161,9 +161,10 @@ inline void expect_report_is_the_reading(const std::string& report_path, const C
   EXPECT_EQ(member_integer(after, "border_cycles"), (long long)read.border_cycles) << name;
   EXPECT_EQ(member_integer(after, "faces"), (long long)read.faces) << name;
   // Coincident distinct vertices only where the surface is non-manifold, and then said so.
-  if (read.coincident_points > 0 && read.points != read.polygons * 3)  // not an STL soup
+  if (read.coincident_points > 0 && read.points != read.polygons * 3) {  // not an STL soup
     EXPECT_FALSE(read.manifold) << name << ": " << read.coincident_points
                                 << " coincident distinct vertices in a manifold output";
+  }
   const std::string status = member_value(repair, "status");
   const int expected = status == "complete"               ? 0
                        : status == "complete_except_kept" ? 3
