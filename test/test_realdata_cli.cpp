@@ -64,11 +64,15 @@ TEST(RealData, EveryLibcgalDemoMeshIsRepairedWithoutCrashOrHangIntoAValidMesh) {
     EXPECT_EQ(row.at("valid"), "1") << file;
     // Non-manifold outputs (sheets of the input touching at a vertex or along an edge, kept
     // split) are never reported as repaired.
-    if (row.at("manifold") != "1") EXPECT_EQ(outcome, "incomplete") << file;
+    if (row.at("manifold") != "1") {
+      EXPECT_EQ(outcome, "incomplete") << file;
+    }
     const auto reading = mesh_repair_test::read_like_cgal((out / file).string());
     mesh_repair_test::expect_report_is_the_reading((out / (file + ".report.json")).string(),
                                                    reading, std::stoi(row.at("exit_status")), file);
-    if (row.at("repair_status") == "complete") EXPECT_EQ(outcome, "repaired") << file;
+    if (row.at("repair_status") == "complete") {
+      EXPECT_EQ(outcome, "repaired") << file;
+    }
     repaired += outcome == "repaired" ? 1 : 0;
     // No step may add a self-intersection: patches are checked against the whole mesh and a
     // stitching tolerance that would add some is reduced or skipped.

@@ -25,8 +25,8 @@ const char* const repair_help =
     "       mesh_repair repair --batch IN_DIR --out-dir OUT_DIR [--jobs N] [--timeout S] "
     "[options]\n"
     "\n"
-    "Repairs a mesh into a valid, watertight one: soup repair and orientation, exact and "
-    "tolerance\n"
+    "Repairs a mesh into a valid, watertight one: soup repair and orientation (duplicated faces\n"
+    "that form a zero-volume wall between two shells removed whole), exact and tolerance\n"
     "stitching of gaps and overlaps, T-junctions, non-manifold vertices, degenerate faces, hole\n"
     "filling (thesis ch. 3). Every change is counted in the report.\n"
     "\n"
@@ -218,7 +218,7 @@ int repair_one(const Arguments& args) {
 
   Mesh mesh;
   CGAL::Mesh_repair::Soup_repair_report soup;
-  load_mesh(input, mesh, soup);
+  load_mesh(input, mesh, soup, true);
   const double tolerance = tolerance_option(args, mesh);
   const long long threads = args.get_int("--threads", 0);
   if (threads < 0) throw Input_error("--threads must be positive");

@@ -152,9 +152,12 @@ void refuse_to_overwrite_input(const std::string& path) {
 }
 }  // namespace
 
-void load_mesh(const std::string& path, Mesh& mesh, CGAL::Mesh_repair::Soup_repair_report& report) {
+void load_mesh(const std::string& path, Mesh& mesh, CGAL::Mesh_repair::Soup_repair_report& report,
+               bool remove_zero_volume_walls) {
   files_read().push_back(path);
-  const std::string error = CGAL::Mesh_repair::read_mesh(path, mesh, report);
+  CGAL::Mesh_repair::Read_options options;
+  options.remove_zero_volume_walls = remove_zero_volume_walls;
+  const std::string error = CGAL::Mesh_repair::read_mesh(path, mesh, report, options);
   if (!error.empty()) throw Input_error(error);
 }
 
@@ -180,6 +183,8 @@ std::string describe_soup_repair(const CGAL::Mesh_repair::Soup_repair_report& r)
   line(r.polygons_split, "pinched polygons split");
   line(r.degenerate_polygons_removed, "degenerate polygons removed");
   line(r.duplicated_polygons_removed, "duplicated polygons removed");
+  line(r.zero_volume_walls_removed,
+       "zero-volume walls removed whole (duplicated polygons between two shells)");
   line(r.isolated_points_removed, "isolated points removed");
   line(r.non_manifold_edges, "non-manifold edges (split apart)");
   line(r.non_manifold_vertices, "non-manifold vertices (duplicated)");

@@ -78,8 +78,10 @@ double parse_double(const std::string& text, const std::string& option);
 long long parse_int(const std::string& text, const std::string& option);
 
 /// Reads, validates and repairs `path` as a polygon soup into `mesh` (see io.h); throws
-/// Input_error with one line on failure.
-void load_mesh(const std::string& path, Mesh& mesh, CGAL::Mesh_repair::Soup_repair_report& report);
+/// Input_error with one line on failure. `remove_zero_volume_walls`: see `Read_options`
+/// (`repair` sets it; the soup stage of the others is CGAL's reading).
+void load_mesh(const std::string& path, Mesh& mesh, CGAL::Mesh_repair::Soup_repair_report& report,
+               bool remove_zero_volume_walls = false);
 
 /// Writes `mesh` atomically; throws Input_error on failure. `binary` for STL/PLY.
 void save_mesh(const std::string& path, const Mesh& mesh, bool binary = false);

@@ -152,14 +152,24 @@ class Coincident_elements {
     return position_of_[std::size_t(get(vim_, v))];
   }
 
-  // Faces along the segment (p, q) by position, whatever their vertices.
+  // The sorted positions of a triangle's corners.
+  std::array<std::size_t, 3> key_of(face_descriptor f) const {
+    const halfedge_descriptor h = halfedge(f, pm_);
+    std::array<std::size_t, 3> key{position(source(h, pm_)), position(target(h, pm_)),
+                                   position(target(next(h, pm_), pm_))};
+    std::sort(key.begin(), key.end());
+    return key;
+  }
+
+  // Distinct faces along the segment (p, q) by position, whatever their vertices; faces on the
+  // same three positions count once (a surface given twice is not a wall).
   std::size_t faces_along(std::size_t p, std::size_t q) const {
-    std::vector<face_descriptor> seen;
+    std::vector<std::array<std::size_t, 3>> seen;
     for (vertex_descriptor v : vertices_at_[p])
       for (halfedge_descriptor h : halfedges_around_target(v, pm_)) {
         if (position(source(h, pm_)) != q) continue;
-        if (!is_border(h, pm_)) seen.push_back(face(h, pm_));
-        if (!is_border(opposite(h, pm_), pm_)) seen.push_back(face(opposite(h, pm_), pm_));
+        if (!is_border(h, pm_)) seen.push_back(key_of(face(h, pm_)));
+        if (!is_border(opposite(h, pm_), pm_)) seen.push_back(key_of(face(opposite(h, pm_), pm_)));
       }
     std::sort(seen.begin(), seen.end());
     return std::size_t(std::unique(seen.begin(), seen.end()) - seen.begin());
@@ -183,7 +193,7 @@ class Coincident_elements {
     std::size_t excess_keep_one = 0, excess_remove_all = 0;
     for (const auto& edge : {std::make_pair(key[0], key[1]), std::make_pair(key[1], key[2]),
                              std::make_pair(key[0], key[2])}) {
-      const std::size_t others = faces_along(edge.first, edge.second) - k;
+      const std::size_t others = faces_along(edge.first, edge.second) - 1;
       excess_keep_one += others + 1 > 2 ? others - 1 : 0;
       excess_remove_all += others > 2 ? others - 2 : 0;
     }
