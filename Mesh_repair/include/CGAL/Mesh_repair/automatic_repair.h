@@ -49,7 +49,10 @@ Repair_options repair_options_from(const PolygonMesh& pm, const NamedParameters&
 /// faces (CGAL) and slivers (thesis 4.5), optionally all but the largest component, hole-contour
 /// cleaning (Pernot 4), hole filling (one method per hole, with fallbacks; holes over the size
 /// limits are left open and reported), optionally CGAL's local removal of self-intersections,
-/// and a verification (valid, manifold, closed, self-intersections in and around the patches).
+/// and a verification (valid, manifold, closed, self-intersections in and around the patches);
+/// last, the output is made to be what a file shows (step "coincident elements": faces
+/// duplicating another by position removed, coincident borders stitched, vertices where sheets
+/// touch kept split and counted; `manifold` is by position as in `detect_defects`).
 ///
 /// Every step is timed and counted in the result; nothing is removed without being counted.
 /// `pm` is valid after the call even when a step fails or the visitor cancels.
@@ -149,7 +152,8 @@ Repair_options repair_options_from(const PolygonMesh& pm, const NamedParameters&
 ///     \cgalParamDefault{`Default_visitor`}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
-/// \return every step with its counts and time, every hole, and what is left (`remaining`).
+/// \return every step with its counts and time, every hole, what is left (`remaining`: asked and
+/// not done; `kept`: left on purpose) and `status()`.
 template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
 Repair_result automatic_repair(PolygonMesh& pm,
                                const NamedParameters& np = parameters::default_values()) {
