@@ -102,12 +102,11 @@ void print_summary(const MR::Repair_result& r) {
     std::cout << ", " << r.self_intersections_output << " self-intersecting pairs (input "
               << r.self_intersections_input << ")";
   std::cout << '\n';
-  if (r.complete()) {
-    std::cout << "complete: every requested repair was done\n";
-  } else {
-    std::cout << "left:\n";
-    for (const std::string& line : r.remaining) std::cout << "  " << line << '\n';
-  }
+  std::cout << "status: " << CGAL::Mesh_repair::to_string(r.status()) << '\n';
+  if (!r.remaining.empty()) std::cout << "left:\n";
+  for (const std::string& line : r.remaining) std::cout << "  " << line << '\n';
+  if (!r.kept.empty()) std::cout << "kept on purpose:\n";
+  for (const std::string& line : r.kept) std::cout << "  " << line << '\n';
 }
 
 }  // namespace

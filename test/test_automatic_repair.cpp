@@ -1,16 +1,19 @@
 // automatic_repair: the whole pipeline on synthetic defective meshes and real ones.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Mesh_repair/automatic_repair.h>
+#include <CGAL/Mesh_repair/detect_defects.h>
 #include <CGAL/Mesh_repair/generators.h>
 #include <CGAL/Mesh_repair/io.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
 #include <gtest/gtest.h>
 
 #include "hole_punching.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <random>
@@ -113,6 +116,11 @@ TEST(AutomaticRepair, HolesOverTheSizeLimitAreLeftOpenAndListed) {
   EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
   EXPECT_GT(result.holes_too_large, 0u);
   EXPECT_FALSE(result.complete());
+  // Left open as asked: kept, not incomplete.
+  EXPECT_EQ(result.status(), MR::Repair_status::complete_except_kept);
+  EXPECT_TRUE(result.remaining.empty()) << result.remaining.front();
+  ASSERT_EQ(result.kept.size(), 1u);
+  EXPECT_NE(result.kept[0].find("larger than the size limit"), std::string::npos);
   EXPECT_EQ(count_border_cycles(mesh), result.holes_too_large);
 }
 
@@ -263,6 +271,9 @@ TEST(AutomaticRepair, SelfIntersectionsInsideAComponentAreReplacedByDefault) {
   const auto without = MR::automatic_repair(kept, MR::parameters::repair_self_intersections(false));
   EXPECT_EQ(without.self_intersections_output, before);
   EXPECT_EQ(find_step(without, "self-intersection removal"), nullptr);
+  // Not asked to remove them: the input's own self-intersections are kept, listed in `kept`.
+  EXPECT_EQ(without.status(), MR::Repair_status::complete_except_kept);
+  EXPECT_TRUE(without.remaining.empty()) << without.remaining.front();
 }
 
 // An assembly of two closed solids that pass through each other: each is a solid of its own and
@@ -282,6 +293,12 @@ TEST(AutomaticRepair, SelfIntersectionsBetweenComponentsAreKept) {
   EXPECT_EQ(step->count("pairs_between_components_kept"), double(before));
   EXPECT_EQ(step->count("pairs_within_components_before"), 0.0);
   EXPECT_EQ(step->count("faces_removed"), 0.0);
+  EXPECT_EQ(result.self_intersections_between_components, before);
+  // A documented choice, not a failure: listed in `kept`.
+  EXPECT_EQ(result.status(), MR::Repair_status::complete_except_kept)
+      << (result.remaining.empty() ? "" : result.remaining.front());
+  ASSERT_EQ(result.kept.size(), 1u);
+  EXPECT_NE(result.kept[0].find("between separate components"), std::string::npos);
 }
 
 /// A sphere with a hole whose border is folded as on scans: every third border vertex is pushed
@@ -353,6 +370,67 @@ TEST(AutomaticRepair, AGrownHoleThatStaysOpenGetsItsFacesBack) {
   EXPECT_EQ(count_border_cycles(mesh), result.holes.failed);
 }
 
+/// Two closed unit cubes, one on top of the other, each with its own eight vertices: the top
+/// of the first and the bottom of the second are the same two triangles, reversed.
+Mesh cubes_sharing_a_face() {
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t>> faces;
+  const std::size_t quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                                   {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (int z = 0; z < 2; ++z) {
+    const std::size_t offset = points.size();
+    for (int k = 0; k < 2; ++k)
+      for (int j = 0; j < 2; ++j)
+        for (int i = 0; i < 2; ++i) points.emplace_back(i, j, z + k);
+    for (const auto& q : quads) {
+      faces.push_back({offset + q[0], offset + q[1], offset + q[2]});
+      faces.push_back({offset + q[0], offset + q[2], offset + q[3]});
+    }
+  }
+  Mesh mesh;
+  PMP::polygon_soup_to_polygon_mesh(points, faces, mesh);
+  return mesh;
+}
+
+// The wall between the cubes is a zero-volume pair: both faces go, the rims are stitched, and
+// the result is one closed box without coincident vertices.
+TEST(AutomaticRepair, AZeroVolumeWallBetweenTwoShellsIsRemovedAndTheShellsJoined) {
+  Mesh mesh = cubes_sharing_a_face();
+  const auto result = MR::automatic_repair(mesh);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  EXPECT_TRUE(CGAL::is_closed(mesh));
+  EXPECT_EQ(mesh.number_of_faces(), 20u);
+  EXPECT_EQ(mesh.number_of_vertices(), 12u);
+  EXPECT_TRUE(result.manifold);
+  EXPECT_EQ(result.coincident_vertices_left, 0u);
+  const auto step = std::find_if(result.steps.begin(), result.steps.end(),
+                                 [](const auto& s) { return s.name == "coincident elements"; });
+  ASSERT_NE(step, result.steps.end());
+  EXPECT_EQ(step->count("duplicated_faces_removed"), 4.0);
+  EXPECT_EQ(step->count("zero_volume_groups_removed"), 2.0);
+  EXPECT_EQ(result.status(), MR::Repair_status::complete)
+      << (result.remaining.empty() ? "" : result.remaining.front());
+}
+
+// Two cubes touching at one corner: the corner stays split (merging it would make a
+// non-manifold vertex); `manifold` says what a merging reader sees, and the repair is incomplete.
+TEST(AutomaticRepair, ShellsTouchingAtACornerAreKeptSplitAndReportedNonManifold) {
+  Mesh mesh = cubes_sharing_a_face();
+  for (auto v : mesh.vertices())
+    if (v.idx() >= 8) mesh.point(v) = mesh.point(v) + Kernel::Vector_3(1, 1, 0);
+  const auto result = MR::automatic_repair(mesh);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  EXPECT_TRUE(CGAL::is_closed(mesh));
+  EXPECT_FALSE(result.manifold);
+  EXPECT_EQ(result.non_manifold_vertices_left, 1u);
+  EXPECT_EQ(result.coincident_vertices_left, 1u);
+  EXPECT_EQ(result.status(), MR::Repair_status::incomplete);
+  ASSERT_FALSE(result.remaining.empty());
+  EXPECT_NE(result.remaining[0].find("non-manifold"), std::string::npos);
+  // One definition: detect_defects sees the same non-manifold vertex.
+  EXPECT_EQ(MR::counts(MR::detect_defects(mesh)).non_manifold_vertices, 1u);
+}
+
 TEST(FillHoles, APatchMeetingAnotherPartOfTheMeshIsRolledBack) {
   Mesh mesh = overlapping_spheres_with_facing_holes();
   ASSERT_EQ(count_border_cycles(mesh), 2u);
@@ -381,6 +459,7 @@ TEST(AutomaticRepair, PatchesNeverCreateSelfIntersectionsAndUnfillableHolesAreLi
   EXPECT_EQ(result.self_intersections_output, 0u);
   EXPECT_EQ(result.holes.failed, 1u);
   EXPECT_FALSE(result.complete());
+  EXPECT_EQ(result.status(), MR::Repair_status::incomplete);
 }
 
 TEST(AutomaticRepair, RealScansWithHolesBecomeClosed) {
@@ -430,10 +509,13 @@ TEST(AutomaticRepair, TheOutlineOfALargeOpenSheetIsLeftOpenAndCounted) {
   EXPECT_EQ(num_faces(mesh), faces_before);
   EXPECT_EQ(count_border_cycles(mesh), 1u);
   EXPECT_TRUE(result.valid);
+  // Left open by the documented default rule: kept, not incomplete.
   bool listed = false;
-  for (const std::string& line : result.remaining)
+  for (const std::string& line : result.kept)
     listed |= line.find("open sheet") != std::string::npos;
   EXPECT_TRUE(listed);
+  EXPECT_TRUE(result.remaining.empty());
+  EXPECT_EQ(result.status(), MR::Repair_status::complete_except_kept);
 }
 
 }  // namespace

@@ -74,8 +74,8 @@ TEST(CheckCli, CleanClosedMeshExitsZeroWithEveryTopLevelKey) {
   const std::string report = read_text(json);
   for (const char* key :
        {"vertices", "faces", "border_cycles", "non_manifold_edges", "non_manifold_vertices",
-        "duplicated_faces", "degenerate_faces", "slivers", "small_gaps", "t_junctions", "overlaps",
-        "self_intersections", "connected_components"})
+        "duplicated_faces", "degenerate_faces", "needles", "caps", "slivers", "small_gaps",
+        "t_junctions", "overlaps", "self_intersections", "connected_components"})
     EXPECT_GE(json_integer(report, key), 0) << key;
   EXPECT_EQ(json_integer(report, "vertices"), 4);
   EXPECT_EQ(json_integer(report, "faces"), 4);

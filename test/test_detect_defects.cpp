@@ -122,7 +122,8 @@ TEST(DetectDefects, CubeMissingOneFaceHasOneSquareBorderCycle) {
   EXPECT_EQ(report.border_cycles[0].island_of, -1);
   const auto n = counts_of(report);
   EXPECT_EQ(n.small_gaps + n.t_junctions + n.overlaps + n.self_intersections + n.slivers +
-                n.degenerate_faces + n.non_manifold_edges + n.non_manifold_vertices,
+                n.degenerate_faces + n.needles + n.caps + n.non_manifold_edges +
+                n.non_manifold_vertices,
             0u);
   EXPECT_EQ(report.components[0].orientation, MR::Volume_orientation::not_closed);
 }
@@ -271,30 +272,40 @@ TEST(DetectDefects, FlippedFaceOnCoincidentVerticesIsInconsistentOrientation) {
 
 std::size_t degenerate_of_kind(const MR::Defect_report& r, MR::Degeneracy kind) {
   std::size_t n = 0;
-  for (const auto& d : r.degenerate_faces) n += d.kind == kind ? 1 : 0;
+  for (const auto& d : r.badly_shaped_faces) n += d.kind == kind ? 1 : 0;
   return n;
 }
 
-TEST(DetectDefects, NeedleIsOneDegenerateFace) {
+// Needles and caps have an area: they are counted as such, never as degenerate faces.
+TEST(DetectDefects, NeedleIsCountedAsANeedleNotAsADegenerateFace) {
   const std::vector<Point> points = {{0, 0, 0}, {1, 0, 0}, {1, 0.01, 0}};
   const auto report = MR::detect_defects(mesh_from(points, {{0, 1, 2}}));
-  EXPECT_EQ(report.degenerate_faces.size(), 1u);
+  EXPECT_EQ(report.badly_shaped_faces.size(), 1u);
   EXPECT_EQ(degenerate_of_kind(report, MR::Degeneracy::needle), 1u);
   EXPECT_EQ(report.slivers.size(), 0u);
+  const auto c = MR::counts(report);
+  EXPECT_EQ(c.needles, 1u);
+  EXPECT_EQ(c.caps, 0u);
+  EXPECT_EQ(c.degenerate_faces, 0u);
 }
 
-TEST(DetectDefects, CapIsOneDegenerateFace) {
+TEST(DetectDefects, CapIsCountedAsACapNotAsADegenerateFace) {
   const std::vector<Point> points = {{0, 0, 0}, {1, 0, 0}, {0.5, 0.01, 0}};
   const auto report = MR::detect_defects(mesh_from(points, {{0, 1, 2}}));
-  EXPECT_EQ(report.degenerate_faces.size(), 1u);
+  EXPECT_EQ(report.badly_shaped_faces.size(), 1u);
   EXPECT_EQ(degenerate_of_kind(report, MR::Degeneracy::cap), 1u);
-  EXPECT_GT(report.degenerate_faces[0].max_angle_deg, 160.0);
+  EXPECT_GT(report.badly_shaped_faces[0].max_angle_deg, 160.0);
+  const auto c = MR::counts(report);
+  EXPECT_EQ(c.caps, 1u);
+  EXPECT_EQ(c.needles, 0u);
+  EXPECT_EQ(c.degenerate_faces, 0u);
 }
 
 TEST(DetectDefects, CollinearTriangleHasExactlyZeroArea) {
   const std::vector<Point> points = {{0, 0, 0}, {1, 0, 0}, {3, 0, 0}};
   const auto report = MR::detect_defects(mesh_from(points, {{0, 1, 2}}));
   EXPECT_EQ(degenerate_of_kind(report, MR::Degeneracy::zero_area), 1u);
+  EXPECT_EQ(MR::counts(report).degenerate_faces, 1u);
 }
 
 TEST(DetectDefects, ObtuseTriangleIsASliverByShapeFactor) {
@@ -302,7 +313,7 @@ TEST(DetectDefects, ObtuseTriangleIsASliverByShapeFactor) {
   const auto report = MR::detect_defects(mesh_from(points, {{0, 1, 2}}));
   ASSERT_EQ(report.slivers.size(), 1u);
   EXPECT_LT(report.slivers[0].shape_factor, 0.7);
-  EXPECT_EQ(report.degenerate_faces.size(), 0u);
+  EXPECT_EQ(report.badly_shaped_faces.size(), 0u);
   const auto strict =
       MR::detect_defects(mesh_from(points, {{0, 1, 2}}),
                          MR::parameters::shape_factor_threshold(0.5).aspect_ratio_threshold(0.1));

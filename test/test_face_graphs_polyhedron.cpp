@@ -16,7 +16,6 @@ using Polyhedron = CGAL::Polyhedron_3<face_graph_test::Kernel>;
 using Polyhedron_with_ids =
     CGAL::Polyhedron_3<face_graph_test::Kernel, CGAL::Polyhedron_items_with_id_3>;
 
-
 TEST(FaceGraphs, PolyhedronGivesTheResultsOfSurfaceMesh) {
   face_graph_test::expect_results_of_surface_mesh<Polyhedron>();
 }

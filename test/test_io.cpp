@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 namespace {
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -159,6 +160,67 @@ TEST(ReadErrors, EachBadFileGetsOneLine) {
   MR::Soup_repair_report report;
   EXPECT_NE(MR::read_mesh(fs::temp_directory_path().string(), mesh, report), "");
   EXPECT_NE(MR::read_mesh("/nonexistent/file.off", mesh, report), "");
+}
+
+}  // namespace
+
+namespace {
+
+/// Two closed unit cubes, one on top of the other, with their own points; as quads.
+std::string cubes_sharing_a_face_off() {
+  std::ostringstream off;
+  off << "OFF\n16 12 0\n";
+  for (int z = 0; z < 2; ++z)
+    for (int k = 0; k < 2; ++k)
+      for (int j = 0; j < 2; ++j)
+        for (int i = 0; i < 2; ++i) off << i << ' ' << j << ' ' << z + k << '\n';
+  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                           {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (int c = 0; c < 2; ++c)
+    for (const auto& q : quads)
+      off << "4 " << 8 * c + q[0] << ' ' << 8 * c + q[1] << ' ' << 8 * c + q[2] << ' '
+          << 8 * c + q[3] << '\n';
+  return off.str();
+}
+
+// CGAL's reading keeps one face of the wall between the cubes (its edges then carry three
+// faces); with remove_zero_volume_walls both go and the cubes are one closed box.
+TEST(ReadWrite, ZeroVolumeWallsAreRemovedWholeOnlyWhenAsked) {
+  const fs::path path = scratch("cubes_sharing_a_face.off");
+  write_text(path, cubes_sharing_a_face_off());
+  Mesh cgal_rule, walls_removed;
+  MR::Soup_repair_report kept_one, removed;
+  ASSERT_EQ(MR::read_mesh(path.string(), cgal_rule, kept_one), "");
+  EXPECT_EQ(kept_one.duplicated_polygons_removed, 1u);
+  EXPECT_EQ(kept_one.zero_volume_walls_removed, 0u);
+  EXPECT_GT(kept_one.non_manifold_edges, 0u);
+  MR::Read_options options;
+  options.remove_zero_volume_walls = true;
+  ASSERT_EQ(MR::read_mesh(path.string(), walls_removed, removed, options), "");
+  EXPECT_EQ(removed.duplicated_polygons_removed, 2u);
+  EXPECT_EQ(removed.zero_volume_walls_removed, 1u);
+  EXPECT_EQ(removed.non_manifold_edges, 0u);
+  EXPECT_TRUE(CGAL::is_closed(walls_removed));
+  EXPECT_EQ(num_vertices(walls_removed), 12u);
+  EXPECT_EQ(num_faces(walls_removed), 20u);
+}
+
+// A surface given twice (once per orientation) keeps one copy: removing both would leave
+// nothing, keeping one leaves every edge with two faces.
+TEST(ReadWrite, ADoubledSurfaceKeepsOneCopyEvenWhenWallsAreRemoved) {
+  const fs::path path = scratch("doubled_tetrahedron.off");
+  write_text(path,
+             "OFF\n4 8 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n"
+             "3 0 1 2\n3 0 3 1\n3 1 3 2\n3 0 2 3\n");
+  Mesh mesh;
+  MR::Soup_repair_report report;
+  MR::Read_options options;
+  options.remove_zero_volume_walls = true;
+  ASSERT_EQ(MR::read_mesh(path.string(), mesh, report, options), "");
+  EXPECT_EQ(report.zero_volume_walls_removed, 0u);
+  EXPECT_EQ(report.duplicated_polygons_removed, 4u);
+  EXPECT_TRUE(CGAL::is_closed(mesh));
+  EXPECT_EQ(num_faces(mesh), 4u);
 }
 
 }  // namespace

@@ -35,7 +35,7 @@ Mesh from_soup(const std::vector<Point>& points, const std::vector<std::vector<s
 
 std::size_t count(const MR::Defect_report& report, MR::Degeneracy kind) {
   std::size_t n = 0;
-  for (const auto& d : report.degenerate_faces) n += d.kind == kind ? 1 : 0;
+  for (const auto& d : report.badly_shaped_faces) n += d.kind == kind ? 1 : 0;
   return n;
 }
 

@@ -25,8 +25,9 @@ struct Job {
   fs::path input, output, report, summary, log;
   pid_t pid = -1;
   std::chrono::steady_clock::time_point start;
-  int status = -1;      ///< exit status of the child, or -1 when it did not exit normally
-  std::string outcome;  ///< "repaired", "incomplete", "failed", "crashed", "timeout"
+  int status = -1;  ///< exit status of the child, or -1 when it did not exit normally
+  /// "repaired", "repaired_except_kept", "incomplete", "failed", "crashed", "timeout"
+  std::string outcome;
   double seconds = 0;
   std::map<std::string, std::string> figures;  ///< from the child's summary file
   std::string note;                            ///< why an entry was not run
@@ -113,14 +114,18 @@ void finish(Job& job, int raw_status, bool timed_out) {
     job.outcome = "timeout";
   } else if (WIFEXITED(raw_status)) {
     job.status = WEXITSTATUS(raw_status);
-    job.outcome = job.status == 0 ? "repaired" : job.status == 1 ? "incomplete" : "failed";
+    job.outcome = job.status == exit_success                ? "repaired"
+                  : job.status == exit_complete_except_kept ? "repaired_except_kept"
+                  : job.status == exit_incomplete           ? "incomplete"
+                                                            : "failed";
   } else {
     job.outcome = "crashed";
   }
   read_figures(job);
 }
 
-const std::vector<std::string> figure_keys = {"faces_before",
+const std::vector<std::string> figure_keys = {"repair_status",
+                                              "faces_before",
                                               "faces_after",
                                               "holes",
                                               "holes_filled",
@@ -149,7 +154,8 @@ void write_summaries(const fs::path& out_dir, const std::vector<Job>& jobs) {
       auto it = job.figures.find(k);
       const std::string value = it == job.figures.end() ? "" : it->second;
       csv << ',' << value;
-      jsonl << ",\"" << k << "\":" << (value.empty() ? "null" : value);
+      const bool text = k == "repair_status" && !value.empty();
+      jsonl << ",\"" << k << "\":" << (value.empty() ? "null" : text ? '"' + value + '"' : value);
     }
     csv << ',' << job.note << '\n';
     jsonl << ",\"note\":\"" << job.note << "\"}\n";
@@ -237,8 +243,10 @@ int run_batch_repair(const Arguments& args, const std::vector<std::string>& raw_
   for (const auto& o : outcomes) std::cout << ' ' << o.second << ' ' << o.first;
   std::cout << "\nsummary: " << (out_dir / "summary.csv").string() << ", "
             << (out_dir / "summary.jsonl").string() << '\n';
-  return outcomes["repaired"] + outcomes["skipped"] == int(jobs.size()) ? exit_success
-                                                                        : exit_incomplete;
+  const int complete = outcomes["repaired"] + outcomes["skipped"];
+  if (complete == int(jobs.size())) return exit_success;
+  return complete + outcomes["repaired_except_kept"] == int(jobs.size()) ? exit_complete_except_kept
+                                                                         : exit_incomplete;
 }
 
 }  // namespace mesh_repair_cli

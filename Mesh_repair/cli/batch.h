@@ -14,7 +14,8 @@ namespace mesh_repair_cli {
 /// runs `mesh_repair repair` on every mesh file of IN_DIR, each in its own process (a crash, a
 /// hang past the timeout or a bad file never stops the others), at most N at once, and writes
 /// OUT_DIR/summary.csv and OUT_DIR/summary.jsonl. Exit 0 when every file was repaired
-/// completely, 1 when some were not, 2 on bad usage.
+/// completely, 3 when every file was repaired completely or completely but for what was kept on
+/// purpose (outcome `repaired_except_kept`), 1 when some were not, 2 on bad usage.
 int run_batch_repair(const Arguments& args, const std::vector<std::string>& raw_args);
 
 }  // namespace mesh_repair_cli

@@ -6,6 +6,7 @@
 #include "common.h"
 #include "picture.h"
 
+#include <CGAL/Mesh_repair/check_written_mesh.h>
 #include <CGAL/Mesh_repair/fill_holes.h>
 #include <CGAL/Mesh_repair/io.h>
 
@@ -71,8 +72,12 @@ const char* const fill_help =
     "  --constraints FILE   lines 'point X Y Z', 'polyline X1 Y1 Z1 X2 Y2 Z2 ...',\n"
     "                       'spacing S', '# comment': points the patches must pass through\n"
     "\n"
-    "Exit status: 0 every selected hole filled (and OUT closed when every hole was selected),\n"
-    "1 some hole left open, 2 bad usage or unreadable input.\n";
+    "OUT is read back as CGAL's read_polygon_mesh reads it (coincident points merged); the\n"
+    "closedness reported is that reading's.\n"
+    "Exit status: 0 every hole filled and OUT, read back, closed; 3 every selected hole filled,\n"
+    "the others left open on purpose (--max-hole-edges, --max-hole-size, outlines of open\n"
+    "sheets); 1 some hole left open, or OUT read back has more border cycles than the filled\n"
+    "mesh; 2 bad usage or unreadable input.\n";
 
 namespace {
 
@@ -83,7 +88,8 @@ CGAL::Mesh_repair::Fill_method parse_method(const std::string& name) {
   return method;
 }
 
-void print_summary(const CGAL::Mesh_repair::Fill_result& result, bool closed) {
+void print_summary(const CGAL::Mesh_repair::Fill_result& result,
+                   const CGAL::Mesh_repair::Written_mesh_check& written) {
   namespace MR = CGAL::Mesh_repair;
   std::cout << result.holes.size() << " hole(s): " << result.filled << " filled, " << result.failed
             << " failed, " << result.skipped << " left open by selection (" << result.sheet_borders
@@ -105,7 +111,23 @@ void print_summary(const CGAL::Mesh_repair::Fill_result& result, bool closed) {
     for (const std::string& fallback : hole.fallbacks) std::cout << "; tried " << fallback;
     std::cout << "\n";
   }
-  std::cout << (closed ? "output is closed\n" : "output has borders\n");
+  if (!written.readable) {
+    std::cout << "the written file cannot be read back: " << written.error << '\n';
+    return;
+  }
+  std::cout << "output read back: " << written.vertices << " vertices, " << written.faces
+            << " faces, " << (written.closed ? "closed" : "open") << " (" << written.border_cycles
+            << " border cycle(s)), " << (written.manifold() ? "manifold" : "non-manifold") << '\n';
+}
+
+// 0 complete, 3 complete but for the holes left open on purpose, 1 incomplete (see fill_help).
+int fill_status(const CGAL::Mesh_repair::Fill_result& result, std::size_t border_cycles_in_memory,
+                const CGAL::Mesh_repair::Written_mesh_check& written) {
+  if (!result.all_filled() || !written.readable || !written.valid ||
+      written.border_cycles > border_cycles_in_memory)
+    return exit_incomplete;
+  if (result.skipped > 0) return exit_complete_except_kept;
+  return written.closed ? exit_success : exit_incomplete;
 }
 
 struct Curvature_options {
@@ -333,9 +355,13 @@ int run_fill(const std::vector<std::string>& args) {
           .fill_constraints(curvature.constraints));
   if (result.cancelled) throw Input_error("interrupted");
 
-  const bool closed = CGAL::is_closed(mesh);
+  std::vector<Mesh::Halfedge_index> cycles;
+  CGAL::Polygon_mesh_processing::extract_boundary_cycles(mesh, std::back_inserter(cycles));
   save_mesh(arguments.get("-o"), mesh);
-  if (!arguments.has("--quiet")) print_summary(result, closed);
+  Mesh written;
+  const MR::Written_mesh_check written_check = MR::check_written_mesh(arguments.get("-o"), written);
+  const int status = fill_status(result, cycles.size(), written_check);
+  if (!arguments.has("--quiet")) print_summary(result, written_check);
   if (arguments.has("--report")) {
     std::ostringstream text;
     MR::Json_writer json(text);
@@ -343,7 +369,12 @@ int run_fill(const std::vector<std::string>& args) {
     json.key("input").value(input);
     json.key("output").value(arguments.get("-o"));
     json.key("method").value(MR::to_string(method));
-    json.key("output_closed").value(closed);
+    json.key("status").value(status == exit_success                ? "complete"
+                             : status == exit_complete_except_kept ? "complete_except_kept"
+                                                                   : "incomplete");
+    json.key("output_closed").value(written_check.closed);
+    json.key("written_file");
+    MR::write_json(json, written_check);
     json.key("result");
     MR::write_json(json, result);
     json.end_object();
@@ -351,8 +382,7 @@ int run_fill(const std::vector<std::string>& args) {
     save_text(arguments.get("--report"), text.str());
   }
   if (!picture.empty()) write_fill_picture(picture, fill_scene(input, mesh, result, patches));
-  const bool complete = result.all_filled() && (result.skipped > 0 || closed);
-  return complete ? exit_success : exit_incomplete;
+  return status;
 }
 
 }  // namespace mesh_repair_cli

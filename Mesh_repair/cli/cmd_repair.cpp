@@ -9,6 +9,7 @@
 #include "common.h"
 
 #include <CGAL/Mesh_repair/automatic_repair.h>
+#include <CGAL/Mesh_repair/check_written_mesh.h>
 #include <CGAL/Mesh_repair/detect_defects.h>
 #include <CGAL/Mesh_repair/io.h>
 
@@ -24,8 +25,8 @@ const char* const repair_help =
     "       mesh_repair repair --batch IN_DIR --out-dir OUT_DIR [--jobs N] [--timeout S] "
     "[options]\n"
     "\n"
-    "Repairs a mesh into a valid, watertight one: soup repair and orientation, exact and "
-    "tolerance\n"
+    "Repairs a mesh into a valid, watertight one: soup repair and orientation (duplicated faces\n"
+    "that form a zero-volume wall between two shells removed whole), exact and tolerance\n"
     "stitching of gaps and overlaps, T-junctions, non-manifold vertices, degenerate faces, hole\n"
     "filling (thesis ch. 3). Every change is counted in the report.\n"
     "\n"
@@ -58,7 +59,13 @@ const char* const repair_help =
     "  --out-dir OUT_DIR        where outputs, reports, summary.csv and summary.jsonl go\n"
     "  --jobs N                 files repaired at once (default 1)\n"
     "  --timeout S              seconds allowed per file (default 600)\n"
-    "exit status: 0 valid and every requested repair done, 1 something left (listed),\n"
+    "The written file is read back as CGAL's read_polygon_mesh reads it (coincident points\n"
+    "merged); the report's valid, closed, manifold and defects after are that reading's.\n"
+    "exit status: 0 complete: valid, every requested repair done, nothing left;\n"
+    "             3 complete except what was kept on purpose (listed): holes over\n"
+    "               --max-hole-size/--max-hole-edges, outlines of open sheets, the input's own\n"
+    "               self-intersections when --remove-self-intersections is not given;\n"
+    "             1 incomplete: something asked was not done (listed);\n"
     "             2 bad usage or unreadable input\n";
 
 namespace {
@@ -101,7 +108,8 @@ CGAL::Mesh_repair::Fill_method fill_option(const Arguments& args) {
 }
 
 void print_summary(const std::string& input, const CGAL::Mesh_repair::Soup_repair_report& soup,
-                   const CGAL::Mesh_repair::Repair_result& r) {
+                   const CGAL::Mesh_repair::Repair_result& r,
+                   const CGAL::Mesh_repair::Written_mesh_check& written) {
   std::cout << input << ": " << r.input_vertices << " vertices, " << r.input_faces << " faces\n";
   const std::string soup_text = describe_soup_repair(soup);
   if (!soup_text.empty()) std::cout << "soup repair:\n" << soup_text;
@@ -125,17 +133,33 @@ void print_summary(const std::string& input, const CGAL::Mesh_repair::Soup_repai
     if (h.filled) continue;
     std::cout << "  hole " << i << " (" << h.border_edges << " edges): " << h.failure << '\n';
   }
-  std::cout << "result: " << r.output_vertices << " vertices, " << r.output_faces << " faces, "
-            << (r.valid ? "valid" : "INVALID") << ", " << (r.closed ? "closed" : "open") << ", "
-            << (r.manifold ? "manifold" : "non-manifold");
+  std::cout << "result: " << r.output_vertices << " vertices, " << r.output_faces << " faces";
+  if (written.readable)
+    std::cout << "; the written file read back: " << written.vertices << " vertices, "
+              << written.faces << " faces";
+  std::cout << ", " << (r.valid ? "valid" : "INVALID") << ", " << (r.closed ? "closed" : "open")
+            << ", " << (r.manifold ? "manifold" : "non-manifold");
   if (r.self_intersections_checked)
     std::cout << ", " << r.self_intersections_output << " self-intersecting pairs";
   std::cout << '\n';
-  if (r.remaining.empty()) {
-    std::cout << "complete: every requested repair was done\n";
-  } else {
+  switch (r.status()) {
+    case CGAL::Mesh_repair::Repair_status::complete:
+      std::cout << "status: complete: every requested repair was done\n";
+      break;
+    case CGAL::Mesh_repair::Repair_status::complete_except_kept:
+      std::cout << "status: complete except what was kept on purpose\n";
+      break;
+    case CGAL::Mesh_repair::Repair_status::incomplete:
+      std::cout << "status: incomplete\n";
+      break;
+  }
+  if (!r.remaining.empty()) {
     std::cout << "left:\n";
     for (const auto& line : r.remaining) std::cout << "  " << line << '\n';
+  }
+  if (!r.kept.empty()) {
+    std::cout << "kept:\n";
+    for (const auto& line : r.kept) std::cout << "  " << line << '\n';
   }
 }
 
@@ -143,7 +167,8 @@ std::string report_json(const std::string& input, const std::string& output,
                         const CGAL::Mesh_repair::Soup_repair_report& soup,
                         const CGAL::Mesh_repair::Defect_report& before,
                         const CGAL::Mesh_repair::Defect_report& after,
-                        const CGAL::Mesh_repair::Repair_result& result, double seconds) {
+                        const CGAL::Mesh_repair::Repair_result& result,
+                        const CGAL::Mesh_repair::Written_mesh_check& written, double seconds) {
   std::ostringstream text;
   CGAL::Mesh_repair::Json_writer json(text);
   json.begin_object().field("input", input).field("output", output).field("seconds", seconds);
@@ -151,6 +176,8 @@ std::string report_json(const std::string& input, const std::string& output,
   CGAL::Mesh_repair::write_json(json, soup);
   json.key("defects_before");
   CGAL::Mesh_repair::write_json(json, before);
+  json.key("written_file");
+  CGAL::Mesh_repair::write_json(json, written);
   json.key("defects_after");
   CGAL::Mesh_repair::write_json(json, after);
   json.key("repair");
@@ -166,14 +193,14 @@ void write_summary(const std::string& path, int status, const CGAL::Mesh_repair:
   const bool only_holes = before.border_cycles > 0 && before.non_manifold_edges == 0 &&
                           before.non_manifold_vertices == 0 && before.duplicated_faces == 0 &&
                           before.inconsistent_orientation == 0 && before.degenerate_faces == 0 &&
-                          before.small_gaps == 0 && before.t_junctions == 0 &&
-                          before.overlaps == 0 && r.self_intersections_checked &&
-                          r.self_intersections_input == 0;
+                          before.needles == 0 && before.caps == 0 && before.small_gaps == 0 &&
+                          before.t_junctions == 0 && before.overlaps == 0 &&
+                          r.self_intersections_checked && r.self_intersections_input == 0;
   std::ostringstream out;
-  out << "status=" << status << "\nfaces_before=" << r.input_faces
-      << "\nfaces_after=" << r.output_faces << "\nholes=" << r.holes.holes.size()
-      << "\nholes_filled=" << r.holes.filled << "\nholes_failed=" << r.holes.failed
-      << "\nholes_too_large=" << r.holes_too_large
+  out << "status=" << status << "\nrepair_status=" << CGAL::Mesh_repair::to_string(r.status())
+      << "\nfaces_before=" << r.input_faces << "\nfaces_after=" << r.output_faces
+      << "\nholes=" << r.holes.holes.size() << "\nholes_filled=" << r.holes.filled
+      << "\nholes_failed=" << r.holes.failed << "\nholes_too_large=" << r.holes_too_large
       << "\nsheet_borders_left_open=" << r.sheet_borders_left_open
       << "\nborder_cycles_after=" << r.border_cycles_left << "\nclosed=" << r.closed
       << "\nvalid=" << r.valid << "\nmanifold=" << r.manifold
@@ -194,7 +221,7 @@ int repair_one(const Arguments& args) {
 
   Mesh mesh;
   CGAL::Mesh_repair::Soup_repair_report soup;
-  load_mesh(input, mesh, soup);
+  load_mesh(input, mesh, soup, true);
   const double tolerance = tolerance_option(args, mesh);
   const long long threads = args.get_int("--threads", 0);
   if (threads < 0) throw Input_error("--threads must be positive");
@@ -210,7 +237,7 @@ int repair_one(const Arguments& args) {
   MR::Defect_report before = MR::detect_defects(
       mesh, MR::parameters::merge_tolerance(tolerance).detect_self_intersections(false));
   MR::add_soup_repair_report(before, soup, mesh);
-  const auto result = MR::automatic_repair(
+  auto result = MR::automatic_repair(
       mesh, MR::parameters::merge_tolerance(tolerance)
                 .fill_method(fill_option(args))
                 .fairing_continuity(unsigned(continuity))
@@ -227,26 +254,35 @@ int repair_one(const Arguments& args) {
                 .number_of_threads(int(threads))
                 .random_seed(unsigned(args.get_int("--seed", 0)))
                 .visitor(std::ref(progress)));
-  const MR::Defect_report after = MR::detect_defects(
-      mesh, MR::parameters::merge_tolerance(tolerance).detect_self_intersections(false));
   save_mesh(output, mesh, args.has("--binary"));
+  // What the file holds: read back as CGAL reads it; the defects after are those of that
+  // reading (what `mesh_repair check OUT` reports).
+  Mesh written;
+  const MR::Written_mesh_check written_check = MR::check_written_mesh(output, written);
+  MR::apply_written_check(result, written_check);
+  const Mesh& shown = written_check.readable ? written : mesh;
+  MR::Defect_report after = MR::detect_defects(
+      shown, MR::parameters::merge_tolerance(tolerance).detect_self_intersections(false));
+  if (written_check.readable) MR::add_soup_repair_report(after, written_check.reading, written);
   const double seconds = seconds_since(start);
-  const int status = result.complete() ? exit_success : exit_incomplete;
+  const int status = exit_status(result.status());
   if (args.has("--report"))
     save_text(args.get("--report"),
-              report_json(input, output, soup, before, after, result, seconds));
+              report_json(input, output, soup, before, after, result, written_check, seconds));
   if (args.has("--summary"))
     write_summary(args.get("--summary"), status, result, MR::counts(before), seconds);
-  print_summary(input, soup, result);
+  print_summary(input, soup, result, written_check);
   const auto c0 = MR::counts(before), c1 = MR::counts(after);
   std::cout << "defects before -> after: border cycles " << c0.border_cycles << " -> "
             << c1.border_cycles << ", non-manifold edges " << c0.non_manifold_edges << " -> "
-            << c1.non_manifold_edges << ", duplicated faces " << c0.duplicated_faces << " -> "
-            << c1.duplicated_faces << ", degenerate faces " << c0.degenerate_faces << " -> "
-            << c1.degenerate_faces << ", small gaps " << c0.small_gaps << " -> " << c1.small_gaps
-            << ", T-junctions " << c0.t_junctions << " -> " << c1.t_junctions
-            << ", self-intersections " << result.self_intersections_input << " -> "
-            << result.self_intersections_output << '\n';
+            << c1.non_manifold_edges << ", non-manifold vertices " << c0.non_manifold_vertices
+            << " -> " << c1.non_manifold_vertices << ", duplicated faces " << c0.duplicated_faces
+            << " -> " << c1.duplicated_faces << ", degenerate faces " << c0.degenerate_faces
+            << " -> " << c1.degenerate_faces << ", needles " << c0.needles << " -> " << c1.needles
+            << ", caps " << c0.caps << " -> " << c1.caps << ", small gaps " << c0.small_gaps
+            << " -> " << c1.small_gaps << ", T-junctions " << c0.t_junctions << " -> "
+            << c1.t_junctions << ", self-intersections " << result.self_intersections_input
+            << " -> " << result.self_intersections_output << '\n';
   std::cout << "wrote " << output << " in " << seconds << " s\n";
   return status;
 }

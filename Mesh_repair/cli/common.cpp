@@ -4,6 +4,7 @@
 
 #include <CGAL/Mesh_repair/file_safety.h>
 #include <CGAL/Mesh_repair/io.h>
+#include <CGAL/Mesh_repair/repair_result.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 
 #include <fcntl.h>
@@ -51,6 +52,17 @@ Arguments::Arguments(const std::vector<std::string>& args, const std::set<std::s
     } else {
       positional_.push_back(a);
     }
+  }
+}
+
+int exit_status(CGAL::Mesh_repair::Repair_status status) {
+  switch (status) {
+    case CGAL::Mesh_repair::Repair_status::complete:
+      return exit_success;
+    case CGAL::Mesh_repair::Repair_status::complete_except_kept:
+      return exit_complete_except_kept;
+    default:
+      return exit_incomplete;
   }
 }
 
@@ -140,9 +152,12 @@ void refuse_to_overwrite_input(const std::string& path) {
 }
 }  // namespace
 
-void load_mesh(const std::string& path, Mesh& mesh, CGAL::Mesh_repair::Soup_repair_report& report) {
+void load_mesh(const std::string& path, Mesh& mesh, CGAL::Mesh_repair::Soup_repair_report& report,
+               bool remove_zero_volume_walls) {
   files_read().push_back(path);
-  const std::string error = CGAL::Mesh_repair::read_mesh(path, mesh, report);
+  CGAL::Mesh_repair::Read_options options;
+  options.remove_zero_volume_walls = remove_zero_volume_walls;
+  const std::string error = CGAL::Mesh_repair::read_mesh(path, mesh, report, options);
   if (!error.empty()) throw Input_error(error);
 }
 
@@ -168,6 +183,8 @@ std::string describe_soup_repair(const CGAL::Mesh_repair::Soup_repair_report& r)
   line(r.polygons_split, "pinched polygons split");
   line(r.degenerate_polygons_removed, "degenerate polygons removed");
   line(r.duplicated_polygons_removed, "duplicated polygons removed");
+  line(r.zero_volume_walls_removed,
+       "zero-volume walls removed whole (duplicated polygons between two shells)");
   line(r.isolated_points_removed, "isolated points removed");
   line(r.non_manifold_edges, "non-manifold edges (split apart)");
   line(r.non_manifold_vertices, "non-manifold vertices (duplicated)");

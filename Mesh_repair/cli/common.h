@@ -20,7 +20,8 @@
 namespace CGAL {
 namespace Mesh_repair {
 struct Soup_repair_report;
-}
+enum class Repair_status;
+}  // namespace Mesh_repair
 }  // namespace CGAL
 
 namespace mesh_repair_cli {
@@ -29,8 +30,18 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
 using Mesh = CGAL::Surface_mesh<Point>;
 
-/// Exit statuses of every command.
-enum Exit_status { exit_success = 0, exit_incomplete = 1, exit_bad_input = 2 };
+/// Exit statuses of every command. `exit_complete_except_kept`: `repair` and `fill` did
+/// everything asked and left only what was kept on purpose (holes over the size limits, outlines
+/// of open sheets, the input's own self-intersections).
+enum Exit_status {
+  exit_success = 0,
+  exit_incomplete = 1,
+  exit_bad_input = 2,
+  exit_complete_except_kept = 3
+};
+
+/// The exit status of a repair status: complete 0, complete_except_kept 3, incomplete 1.
+int exit_status(CGAL::Mesh_repair::Repair_status status);
 
 /// Bad usage or unreadable input: the command prints `what()` on one line and exits with 2.
 struct Input_error : std::runtime_error {
@@ -67,8 +78,10 @@ double parse_double(const std::string& text, const std::string& option);
 long long parse_int(const std::string& text, const std::string& option);
 
 /// Reads, validates and repairs `path` as a polygon soup into `mesh` (see io.h); throws
-/// Input_error with one line on failure.
-void load_mesh(const std::string& path, Mesh& mesh, CGAL::Mesh_repair::Soup_repair_report& report);
+/// Input_error with one line on failure. `remove_zero_volume_walls`: see `Read_options`
+/// (`repair` sets it; the soup stage of the others is CGAL's reading).
+void load_mesh(const std::string& path, Mesh& mesh, CGAL::Mesh_repair::Soup_repair_report& report,
+               bool remove_zero_volume_walls = false);
 
 /// Writes `mesh` atomically; throws Input_error on failure. `binary` for STL/PLY.
 void save_mesh(const std::string& path, const Mesh& mesh, bool binary = false);

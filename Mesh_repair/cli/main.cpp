@@ -40,7 +40,7 @@ void print_usage(std::ostream& out) {
         << command.summary << '\n';
   out << "\nmesh_repair COMMAND --help describes a command.\n"
          "Exit status: 0 success, 1 defects remain or operation incomplete, 2 bad usage or "
-         "input.\n";
+         "input,\n3 (repair, fill) complete except what was kept on purpose (listed).\n";
 }
 
 }  // namespace

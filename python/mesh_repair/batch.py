@@ -314,8 +314,8 @@ def _figures(report, status, seconds):
                   and r["self_intersections_input"] == 0
                   and all(before[k] == 0 for k in (
                       "non_manifold_edges", "non_manifold_vertices", "duplicated_faces",
-                      "inconsistent_orientation", "degenerate_faces", "small_gaps",
-                      "t_junctions", "overlaps")))
+                      "inconsistent_orientation", "degenerate_faces", "needles", "caps",
+                      "small_gaps", "t_junctions", "overlaps")))
     return {
         "status": status, "faces_before": r["input_faces"], "faces_after": r["output_faces"],
         "holes": len(r["holes"]), "holes_filled": r["holes_filled"],

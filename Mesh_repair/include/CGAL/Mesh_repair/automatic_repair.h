@@ -9,6 +9,7 @@
 /// doc/automatic_repair.md.
 
 #include <CGAL/Mesh_repair/repair_result.h>
+#include <CGAL/Mesh_repair/internal/automatic_repair/coincident_elements.h>
 #include <CGAL/Mesh_repair/internal/automatic_repair/repair_steps.h>
 #include <CGAL/Mesh_repair/parameters.h>
 #include <CGAL/Mesh_repair/visitor.h>
@@ -49,7 +50,10 @@ Repair_options repair_options_from(const PolygonMesh& pm, const NamedParameters&
 /// cleaning (Pernot 4), hole filling (one method per hole, with fallbacks; holes over the size
 /// limits are left open and reported; holes whose every patch was rejected are grown by rings
 /// of faces and filled again), replacement of the faces that intersect others of their
-/// component, and a verification (valid, manifold, closed, self-intersections in and around the patches).
+/// component, and a verification (valid, manifold, closed, self-intersections in and around the
+/// patches); last, the output is made to be what a file shows (step "coincident elements": faces
+/// duplicating another by position removed, coincident borders stitched, vertices where sheets
+/// touch kept split and counted; `manifold` is by position as in `detect_defects`).
 ///
 /// Every step is timed and counted in the result; nothing is removed without being counted.
 /// `pm` is valid after the call even when a step fails or the visitor cancels.
@@ -152,7 +156,8 @@ Repair_options repair_options_from(const PolygonMesh& pm, const NamedParameters&
 ///     \cgalParamDefault{`Default_visitor`}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
-/// \return every step with its counts and time, every hole, and what is left (`remaining`).
+/// \return every step with its counts and time, every hole, what is left (`remaining`: asked and
+/// not done; `kept`: left on purpose) and `status()`.
 template <class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
 Repair_result automatic_repair(PolygonMesh& pm,
                                const NamedParameters& np = parameters::default_values()) {
@@ -164,8 +169,8 @@ Repair_result automatic_repair(PolygonMesh& pm,
   const GeomTraits traits =
       choose_parameter<GeomTraits>(get_parameter(np, CGAL::internal_np::geom_traits));
   internal::Visitor_parameter<NamedParameters> visitor(np);
-  return internal::run_repair_pipeline(pm, vpm, traits, internal::repair_options_from(pm, np),
-                                       visitor.get());
+  return internal::run_automatic_repair(pm, vpm, traits, internal::repair_options_from(pm, np),
+                                        visitor.get());
 }
 
 }  // namespace Mesh_repair
@@ -183,6 +188,12 @@ extern
     template Repair_result
     run_repair_pipeline<Core_mesh, Core_vpm, Core_traits>(Core_mesh&, Core_vpm, const Core_traits&,
                                                           const Repair_options&, Any_visitor);
+#ifndef CGAL_MESH_REPAIR_INSTANTIATE_AUTOMATIC_REPAIR
+extern
+#endif
+    template Repair_result
+    run_automatic_repair<Core_mesh, Core_vpm, Core_traits>(Core_mesh&, Core_vpm, const Core_traits&,
+                                                           const Repair_options&, Any_visitor);
 }  // namespace internal
 }  // namespace Mesh_repair
 }  // namespace CGAL

@@ -60,14 +60,17 @@ struct Face_pair {
   Coordinates first_centroid{0, 0, 0}, second_centroid{0, 0, 0};
 };
 
-/// Why a face is degenerate.
+/// How a badly shaped face is bad: zero area (degenerate: its corners are collinear, exact
+/// predicate), a needle (one edge much shorter than the longest) or a cap (one angle close to
+/// 180 degrees). Needles and caps have an area: they are not degenerate.
 enum class Degeneracy { zero_area, needle, cap };
 
 inline const char* name(Degeneracy d) {
   return d == Degeneracy::zero_area ? "zero_area" : d == Degeneracy::needle ? "needle" : "cap";
 }
 
-struct Degenerate_face {
+/// A badly shaped face and why (`kind`).
+struct Badly_shaped_face {
   std::size_t face = 0;
   Degeneracy kind = Degeneracy::zero_area;
   Coordinates centroid{0, 0, 0};
@@ -122,7 +125,8 @@ struct Defect_report {
   /// counted per glued component as the smaller side.
   std::vector<std::size_t> inconsistently_oriented_faces;
   bool orientable = true;
-  std::vector<Degenerate_face> degenerate_faces;
+  /// Zero-area faces, needles and caps, each with its kind (`counts` separates them).
+  std::vector<Badly_shaped_face> badly_shaped_faces;
   std::vector<Sliver> slivers;
   std::vector<Small_gap> small_gaps;
   std::vector<T_junction> t_junctions;
@@ -143,15 +147,17 @@ struct Defect_report {
 /// found and repaired with what remains in the mesh (see `add_soup_repair_report`).
 struct Defect_counts {
   std::size_t border_cycles = 0, ring_hole_islands = 0, non_manifold_edges = 0,
-              non_manifold_vertices = 0, duplicated_faces = 0, inconsistent_orientation = 0,
-              degenerate_faces = 0, slivers = 0, small_gaps = 0, t_junctions = 0, overlaps = 0,
-              self_intersections = 0, connected_components = 0;
+              non_manifold_vertices = 0, duplicated_faces = 0, inconsistent_orientation = 0;
+  std::size_t degenerate_faces = 0;   ///< zero-area faces (+ soup polygons removed as degenerate)
+  std::size_t needles = 0, caps = 0;  ///< badly shaped faces with an area
+  std::size_t slivers = 0, small_gaps = 0, t_junctions = 0, overlaps = 0, self_intersections = 0,
+              connected_components = 0;
 
   /// True when any defect is counted. Border cycles count: an open mesh is a defect to repair.
   bool any() const {
     return border_cycles + non_manifold_edges + non_manifold_vertices + duplicated_faces +
-               inconsistent_orientation + degenerate_faces + slivers + small_gaps + t_junctions +
-               overlaps + self_intersections >
+               inconsistent_orientation + degenerate_faces + needles + caps + slivers + small_gaps +
+               t_junctions + overlaps + self_intersections >
            0;
   }
 };
@@ -164,7 +170,11 @@ inline Defect_counts counts(const Defect_report& r) {
   c.non_manifold_vertices = r.non_manifold_vertices.size();
   c.duplicated_faces = r.duplicated_faces.size();
   c.inconsistent_orientation = r.inconsistently_oriented_faces.size();
-  c.degenerate_faces = r.degenerate_faces.size();
+  for (const auto& f : r.badly_shaped_faces) {
+    c.degenerate_faces += f.kind == Degeneracy::zero_area ? 1 : 0;
+    c.needles += f.kind == Degeneracy::needle ? 1 : 0;
+    c.caps += f.kind == Degeneracy::cap ? 1 : 0;
+  }
   if (r.has_soup_stage) {
     c.duplicated_faces += r.soup_stage.duplicated_polygons_removed;
     c.inconsistent_orientation += r.soup_stage.polygons_reversed;

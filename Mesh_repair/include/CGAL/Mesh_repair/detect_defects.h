@@ -214,7 +214,7 @@ Defect_report run_detection(const Access& access, const Options& options, Any_vi
 /// \ingroup PkgMeshRepair
 /// Finds every defect of `pm` (thesis Table 4.1) with its location: border cycles with their
 /// size and the cycles that look like islands of a ring hole (thesis 4.4), non-manifold edges
-/// and vertices, duplicated faces, inconsistent orientation, degenerate faces (zero area,
+/// and vertices, duplicated faces, inconsistent orientation, badly shaped faces (zero area,
 /// needles, caps), slivers (shape factor f, thesis eq. 4.13-4.14; aspect ratio Q, Pernot eq. 1),
 /// small gaps and T-junctions between border elements, overlapping coplanar faces,
 /// self-intersections, connected components, closedness and volume orientation, and quality

@@ -35,10 +35,12 @@
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <exception>
 #include <fstream>
+#include <map>
 #include <set>
 #include <string>
 #include <utility>
@@ -56,14 +58,17 @@ struct Soup_repair_report {
   std::size_t polygons_split = 0;               ///< pinched polygons split into several
   std::size_t degenerate_polygons_removed = 0;  ///< fewer than three distinct points
   std::size_t duplicated_polygons_removed = 0;  ///< same points as another polygon (any order)
-  std::size_t isolated_points_removed = 0;      ///< points used by no polygon
-  std::size_t non_manifold_edges = 0;           ///< edges used by more than two polygons
-  std::size_t non_manifold_vertices = 0;        ///< vertices whose polygons form several fans
-  std::size_t vertices_duplicated = 0;          ///< points added to make the soup manifold
-  std::size_t polygons_reversed = 0;            ///< polygons flipped to agree with neighbours
-  std::size_t polygons_triangulated = 0;        ///< faces with more than three sides split
-  std::size_t triangles_from_polygons = 0;      ///< triangles that replaced them
-  bool orientable = true;                       ///< orientation needed no vertex duplication
+  /// Groups of duplicated polygons removed whole as zero-volume walls (`Read_options`); their
+  /// polygons are counted in `duplicated_polygons_removed` too.
+  std::size_t zero_volume_walls_removed = 0;
+  std::size_t isolated_points_removed = 0;  ///< points used by no polygon
+  std::size_t non_manifold_edges = 0;       ///< edges used by more than two polygons
+  std::size_t non_manifold_vertices = 0;    ///< vertices whose polygons form several fans
+  std::size_t vertices_duplicated = 0;      ///< points added to make the soup manifold
+  std::size_t polygons_reversed = 0;        ///< polygons flipped to agree with neighbours
+  std::size_t polygons_triangulated = 0;    ///< faces with more than three sides split
+  std::size_t triangles_from_polygons = 0;  ///< triangles that replaced them
+  bool orientable = true;                   ///< orientation needed no vertex duplication
   /// Locations: soup point pairs of non-manifold edges, soup points of non-manifold vertices.
   std::vector<std::pair<std::size_t, std::size_t>> non_manifold_edge_points;
   std::vector<std::size_t> non_manifold_vertex_points;
@@ -87,6 +92,7 @@ inline void write_json(Json_writer& json, const Soup_repair_report& r) {
       .field("polygons_split", r.polygons_split)
       .field("degenerate_polygons_removed", r.degenerate_polygons_removed)
       .field("duplicated_polygons_removed", r.duplicated_polygons_removed)
+      .field("zero_volume_walls_removed", r.zero_volume_walls_removed)
       .field("isolated_points_removed", r.isolated_points_removed)
       .field("non_manifold_edges", r.non_manifold_edges)
       .field("non_manifold_vertices", r.non_manifold_vertices)
@@ -107,6 +113,12 @@ inline void write_json(Json_writer& json, const Soup_repair_report& r) {
 struct Read_options {
   bool repair_soup = true;  ///< run CGAL's polygon-soup repair and orientation
   bool triangulate = true;  ///< split faces with more than three sides into triangles
+  /// Duplicated polygons (the same points in either orientation) are all removed, instead of
+  /// all but one as CGAL's `read_polygon_mesh` does, when that leaves fewer edges with more
+  /// than two polygons: the wall between two closed shells that share a face, whose removal
+  /// joins the shells. `mesh_repair repair` sets it; `check` and the read-back of a written file
+  /// keep CGAL's rule.
+  bool remove_zero_volume_walls = false;
 };
 
 /// A soup as read from a file: points and polygons of point indices.
@@ -187,10 +199,107 @@ struct Orientation_counter : CGAL::Polygon_mesh_processing::Default_orientation_
 
 }  // namespace internal
 
+namespace internal {
+
+/// A polygon in a form shared by its duplicates: rotated to start at its smallest point index,
+/// in the direction whose second index is the smaller.
+inline std::vector<std::size_t> canonical_polygon(const std::vector<std::size_t>& polygon) {
+  const std::size_t n = polygon.size();
+  const std::size_t first =
+      std::size_t(std::min_element(polygon.begin(), polygon.end()) - polygon.begin());
+  const bool forward = polygon[(first + 1) % n] <= polygon[(first + n - 1) % n];
+  std::vector<std::size_t> key(n);
+  for (std::size_t k = 0; k < n; ++k)
+    key[k] = polygon[forward ? (first + k) % n : (first + n - k) % n];
+  return key;
+}
+
+/// Removes every polygon of each group of duplicated polygons whose removal leaves fewer edges
+/// used by more than two distinct polygons than keeping one of them does (a zero-volume wall
+/// between two shells). Returns the groups and the polygons removed.
+inline std::pair<std::size_t, std::size_t> remove_zero_volume_walls(
+    std::vector<std::vector<std::size_t>>& polygons) {
+  using Edge = std::pair<std::size_t, std::size_t>;
+  auto edge = [](std::size_t a, std::size_t b) { return Edge(std::min(a, b), std::max(a, b)); };
+  // Candidates: polygons on the same sorted point indices, then the same cyclic sequence.
+  std::vector<std::pair<std::vector<std::size_t>, std::size_t>> keyed;
+  keyed.reserve(polygons.size());
+  for (std::size_t i = 0; i < polygons.size(); ++i) {
+    std::vector<std::size_t> sorted = polygons[i];
+    std::sort(sorted.begin(), sorted.end());
+    keyed.emplace_back(std::move(sorted), i);
+  }
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<std::vector<std::size_t>> groups;
+  for (std::size_t i = 0; i < keyed.size();) {
+    std::size_t j = i + 1;
+    while (j < keyed.size() && keyed[j].first == keyed[i].first) ++j;
+    if (j - i > 1) {
+      std::map<std::vector<std::size_t>, std::vector<std::size_t>> same;
+      for (std::size_t k = i; k < j; ++k)
+        same[canonical_polygon(polygons[keyed[k].second])].push_back(keyed[k].second);
+      for (auto& entry : same)
+        if (entry.second.size() > 1) groups.push_back(std::move(entry.second));
+    }
+    i = j;
+  }
+  if (groups.empty()) return {0, 0};
+  // The distinct polygons along each edge of a group (a group of duplicates counts once: a
+  // surface given twice is not a wall).
+  std::vector<std::size_t> class_of(polygons.size());
+  for (std::size_t i = 0; i < polygons.size(); ++i) class_of[i] = groups.size() + i;
+  for (std::size_t g = 0; g < groups.size(); ++g)
+    for (std::size_t i : groups[g]) class_of[i] = g;
+  std::map<Edge, std::vector<std::size_t>> classes;
+  for (const auto& group : groups) {
+    const auto& p = polygons[group.front()];
+    for (std::size_t k = 0; k < p.size(); ++k) classes[edge(p[k], p[(k + 1) % p.size()])];
+  }
+  for (std::size_t i = 0; i < polygons.size(); ++i) {
+    const auto& p = polygons[i];
+    for (std::size_t k = 0; k < p.size(); ++k) {
+      auto it = classes.find(edge(p[k], p[(k + 1) % p.size()]));
+      if (it != classes.end()) it->second.push_back(class_of[i]);
+    }
+  }
+  for (auto& entry : classes) {
+    std::sort(entry.second.begin(), entry.second.end());
+    entry.second.erase(std::unique(entry.second.begin(), entry.second.end()), entry.second.end());
+  }
+  std::vector<bool> doomed(polygons.size(), false);
+  std::size_t walls = 0, removed = 0;
+  for (const auto& group : groups) {
+    const auto& p = polygons[group.front()];
+    std::size_t excess_keep_one = 0, excess_remove_all = 0;
+    for (std::size_t k = 0; k < p.size(); ++k) {
+      const std::size_t others = classes[edge(p[k], p[(k + 1) % p.size()])].size() - 1;
+      excess_keep_one += others + 1 > 2 ? others - 1 : 0;
+      excess_remove_all += others > 2 ? others - 2 : 0;
+    }
+    if (excess_remove_all >= excess_keep_one) continue;
+    ++walls;
+    removed += group.size();
+    for (std::size_t i : group) doomed[i] = true;
+  }
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < polygons.size(); ++i) {
+    if (doomed[i]) continue;
+    if (kept != i) polygons[kept] = std::move(polygons[i]);
+    ++kept;
+  }
+  polygons.resize(kept);
+  return {walls, removed};
+}
+
+}  // namespace internal
+
 /// Repairs and orients a soup in place with CGAL (`repair_polygon_soup`'s steps, one by one so
-/// each is counted, then `orient_polygon_soup`, which duplicates non-manifold vertices).
+/// each is counted, then `orient_polygon_soup`, which duplicates non-manifold vertices). With
+/// `remove_zero_volume_walls`, duplicated polygons forming a zero-volume wall are all removed
+/// before CGAL removes the other duplicates (see `Read_options`).
 template <class Point>
-Soup_repair_report repair_polygon_soup(Polygon_soup<Point>& soup) {
+Soup_repair_report repair_polygon_soup(Polygon_soup<Point>& soup,
+                                       bool remove_zero_volume_walls = false) {
   namespace PMP = CGAL::Polygon_mesh_processing;
   using Traits = typename CGAL::Kernel_traits<Point>::Kernel;
   Soup_repair_report report;
@@ -207,7 +316,12 @@ Soup_repair_report repair_polygon_soup(Polygon_soup<Point>& soup) {
       PMP::internal::split_pinched_polygons_in_polygon_soup(points, polygons, traits);
   report.degenerate_polygons_removed =
       PMP::internal::remove_invalid_polygons_in_polygon_soup(points, polygons);
-  report.duplicated_polygons_removed =
+  if (remove_zero_volume_walls) {
+    const auto walls = internal::remove_zero_volume_walls(polygons);
+    report.zero_volume_walls_removed = walls.first;
+    report.duplicated_polygons_removed = walls.second;
+  }
+  report.duplicated_polygons_removed +=
       PMP::merge_duplicate_polygons_in_polygon_soup(points, polygons);
   report.isolated_points_removed = PMP::remove_isolated_points_in_polygon_soup(points, polygons);
 
@@ -224,6 +338,7 @@ inline void add_soup_changes(Soup_repair_report& report, const Soup_repair_repor
   report.polygons_split += more.polygons_split;
   report.degenerate_polygons_removed += more.degenerate_polygons_removed;
   report.duplicated_polygons_removed += more.duplicated_polygons_removed;
+  report.zero_volume_walls_removed += more.zero_volume_walls_removed;
   report.isolated_points_removed += more.isolated_points_removed;
   report.non_manifold_edges += more.non_manifold_edges;
   report.non_manifold_vertices += more.non_manifold_vertices;
@@ -295,7 +410,7 @@ std::string repaired_soup_to_mesh(Polygon_soup<Point>& soup, PolygonMesh& pm,
   report = Soup_repair_report();
   report.input_points = soup.points.size();
   report.input_polygons = soup.polygons.size();
-  if (options.repair_soup) report = repair_polygon_soup(soup);
+  if (options.repair_soup) report = repair_polygon_soup(soup, options.remove_zero_volume_walls);
   report.input_polygons += soup.short_polygons_skipped;
   report.degenerate_polygons_removed += soup.short_polygons_skipped;
   if (soup.polygons.empty()) return name + ": no valid face left after soup repair";
@@ -388,7 +503,7 @@ CGAL_MESH_REPAIR_IO_EXTERN template std::string read_polygon_soup_from_memory(
 CGAL_MESH_REPAIR_IO_EXTERN template std::string read_polygon_soup(
     const std::string&, Polygon_soup<internal::Core_traits::Point_3>&);
 CGAL_MESH_REPAIR_IO_EXTERN template Soup_repair_report repair_polygon_soup(
-    Polygon_soup<internal::Core_traits::Point_3>&);
+    Polygon_soup<internal::Core_traits::Point_3>&, bool);
 CGAL_MESH_REPAIR_IO_EXTERN template std::string soup_to_mesh(
     const Polygon_soup<internal::Core_traits::Point_3>&, internal::Core_mesh&, bool,
     Soup_repair_report&);

@@ -33,6 +33,19 @@ struct Repair_step_report {
   }
 };
 
+/// How far a repair went, for scripts (the exit status of `mesh_repair repair`: 0, 3, 1).
+enum class Repair_status {
+  complete,              ///< valid, and nothing is left
+  complete_except_kept,  ///< valid; only what was kept on purpose is left (`Repair_result::kept`)
+  incomplete             ///< something asked for was not done (`Repair_result::remaining`)
+};
+
+inline const char* to_string(Repair_status s) {
+  return s == Repair_status::complete               ? "complete"
+         : s == Repair_status::complete_except_kept ? "complete_except_kept"
+                                                    : "incomplete";
+}
+
 /// What `automatic_repair` did and what is left.
 struct Repair_result {
   std::vector<Repair_step_report> steps;
@@ -46,25 +59,48 @@ struct Repair_result {
   std::size_t self_intersections_input = 0;       ///< pairs, when detection was asked
   std::size_t self_intersections_output = 0;      ///< pairs, when detection was asked
   std::size_t self_intersections_in_patches = 0;  ///< pairs involving a patch or its ring
+  /// Of the output's pairs, those between two connected components (an assembly of solids):
+  /// kept on purpose (listed in `kept`), counted by the self-intersection removal step.
+  std::size_t self_intersections_between_components = 0;
   std::size_t border_cycles_left = 0;
+  /// Non-manifold vertices and edges of the output by position: what a reader that merges
+  /// coincident points (CGAL's `read_polygon_mesh`) sees, where separate sheets of the surface
+  /// touch and are kept split (step "coincident elements", doc/automatic_repair.md).
+  std::size_t non_manifold_vertices_left = 0, non_manifold_edges_left = 0;
+  /// Vertices at the position of another vertex (beyond the first at each position).
+  std::size_t coincident_vertices_left = 0;
+  /// `manifold`: no non-manifold vertex or edge, by position as well as in the halfedge structure.
   bool valid = false, closed = false, manifold = false;
   bool self_intersections_checked = false;
   bool cancelled = false;
   /// Requested steps that the mesh type does not support (e.g. "self-intersection removal" on
   /// OpenMesh, see `Supports_self_intersection_removal`); each is also a line of `remaining`.
   std::vector<std::string> unavailable_steps;
-  std::vector<std::string> remaining;  ///< what is left, one line each; empty when complete
+  /// What was asked and not done, one line each: empty unless the status is `incomplete`.
+  std::vector<std::string> remaining;
+  /// What is left on purpose, one line each: holes over `max_hole_size` / `max_hole_edges`,
+  /// outlines of open sheets (`sheet_border_ratio`), the input's own self-intersections when
+  /// their removal was not asked.
+  std::vector<std::string> kept;
 
-  /// True when the mesh is valid and every requested repair was done.
-  bool complete() const { return valid && remaining.empty() && !cancelled; }
+  Repair_status status() const {
+    if (!valid || cancelled || !remaining.empty()) return Repair_status::incomplete;
+    return kept.empty() ? Repair_status::complete : Repair_status::complete_except_kept;
+  }
+  /// True when the mesh is valid, every requested repair was done and nothing is left.
+  bool complete() const { return status() == Repair_status::complete; }
 };
 
 inline void write_json(Json_writer& json, const Repair_result& r) {
   json.begin_object();
-  json.field("complete", r.complete())
+  json.field("status", to_string(r.status()))
+      .field("complete", r.complete())
       .field("valid", r.valid)
       .field("closed", r.closed)
       .field("manifold", r.manifold)
+      .field("non_manifold_vertices_left", r.non_manifold_vertices_left)
+      .field("non_manifold_edges_left", r.non_manifold_edges_left)
+      .field("coincident_vertices_left", r.coincident_vertices_left)
       .field("cancelled", r.cancelled)
       .field("input_vertices", r.input_vertices)
       .field("input_faces", r.input_faces)
@@ -81,8 +117,10 @@ inline void write_json(Json_writer& json, const Repair_result& r) {
       .field("self_intersections_input", r.self_intersections_input)
       .field("self_intersections_output", r.self_intersections_output)
       .field("self_intersections_in_patches", r.self_intersections_in_patches)
+      .field("self_intersections_between_components", r.self_intersections_between_components)
       .array("unavailable_steps", r.unavailable_steps)
-      .array("remaining", r.remaining);
+      .array("remaining", r.remaining)
+      .array("kept", r.kept);
   json.key("steps").begin_array();
   for (const auto& s : r.steps) {
     json.begin_object().field("name", s.name).field("seconds", s.seconds);

@@ -94,6 +94,9 @@ class Region_replacer {
       removed[u].faces = std::move(unit_faces[u]);
       removed[u].skipped = pinches(removed[u].faces) > 0;
       if (!removed[u].skipped) record(removed[u]);
+      // A region with no kept face along it is a whole component: removing it opens no hole
+      // and would lose it.
+      if (removed[u].rim.empty()) removed[u].skipped = true;
     }
     // The opposite of every rim halfedge is a border halfedge of the unit's holes once the
     // faces are gone: it finds the holes each unit opened.
@@ -135,7 +138,10 @@ class Region_replacer {
     const Fill_result filled =
         fill_hole_groups(pm_, vpm_, traits_, groups, patches, options_, visitor_, false);
     fill_results.push_back(filled);
-    std::vector<bool> tie_ok(units, true);
+    // A tie succeeds when it opened holes and every one of them was filled.
+    std::vector<bool> tie_ok(units, false);
+    for (std::size_t k = 0; k < groups.size(); ++k)
+      tie_ok[find(tie, units_of_group[k].front())] = true;
     for (std::size_t k = 0; k < groups.size(); ++k)
       if (!filled.holes[k].filled) tie_ok[find(tie, units_of_group[k].front())] = false;
     for (std::size_t k = 0; k < groups.size(); ++k) {
@@ -172,7 +178,7 @@ class Region_replacer {
     std::vector<std::array<Point, 3>> positions;
     std::vector<halfedge_descriptor> rim;
     std::unordered_set<vertex_descriptor> leaving;
-    bool skipped = false;  ///< removing it would pinch a vertex: left alone
+    bool skipped = false;  ///< would pinch a vertex or remove a whole component: left alone
   };
 
   /// Faces around a vertex in circulation order, and whether each stays (not removed, not a

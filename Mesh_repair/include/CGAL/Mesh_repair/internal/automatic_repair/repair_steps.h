@@ -523,6 +523,7 @@ void step_remove_self_intersections(PolygonMesh& pm, VertexPointMap vpm, const G
                                  std::to_string(int(100 * max_self_intersecting_face_fraction)) +
                                  "% of the faces: not removed");
     timer.count("pairs_within_components_after", double(pairs.size()));
+    result.self_intersections_between_components = between;
     return;
   }
   Region_replacement_report total;
@@ -545,6 +546,7 @@ void step_remove_self_intersections(PolygonMesh& pm, VertexPointMap vpm, const G
   timer.count("faces_removed", double(total.faces_removed));
   timer.count("faces_added", double(total.faces_added));
   timer.count("pairs_within_components_after", double(pairs.size()));
+  result.self_intersections_between_components = between;
   if (total.faces_not_restored > 0) {
     timer.count("faces_not_restored", double(total.faces_not_restored));
     timer.step().notes.push_back(std::to_string(total.faces_not_restored) +
@@ -601,10 +603,16 @@ inline void list_remaining(Repair_result& result) {
   add(result.self_intersections_in_patches > 0,
       std::to_string(result.self_intersections_in_patches) +
           " self-intersecting face pair(s) more than in the input");
-  add(result.self_intersections_checked && result.self_intersections_output > 0 &&
+  const std::size_t between =
+      std::min(result.self_intersections_between_components, result.self_intersections_output);
+  add(result.self_intersections_checked && result.self_intersections_output > between &&
           result.self_intersections_in_patches == 0,
-      std::to_string(result.self_intersections_output) +
+      std::to_string(result.self_intersections_output - between) +
           " self-intersecting face pair(s) (already in the input)");
+  add(result.self_intersections_checked && between > 0 && result.self_intersections_in_patches == 0,
+      std::to_string(between) +
+          " self-intersecting face pair(s) between separate components (each stays a solid of its "
+          "own)");
   for (const std::string& step : result.unavailable_steps)
     result.remaining.push_back(step + " is not available for this mesh type");
   add(result.cancelled, "cancelled before the end");

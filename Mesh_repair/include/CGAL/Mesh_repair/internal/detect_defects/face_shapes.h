@@ -3,9 +3,9 @@
 #ifndef CGAL_MESH_REPAIR_INTERNAL_DETECT_DEFECTS_FACE_SHAPES_H
 #define CGAL_MESH_REPAIR_INTERNAL_DETECT_DEFECTS_FACE_SHAPES_H
 
-// Degenerate faces (exactly zero area by the Collinear_3 predicate; needles and caps by CGAL's
-// thresholds) and slivers (shape factor f, thesis eq. 4.13-4.14, or aspect ratio Q, Pernot
-// eq. 1, below their thresholds). Faces are classified in parallel when TBB is available.
+// Badly shaped faces: degenerate ones (exactly zero area by the Collinear_3 predicate), needles
+// and caps (CGAL's thresholds) and slivers (shape factor f, thesis eq. 4.13-4.14, or aspect ratio
+// Q, Pernot eq. 1, below their thresholds). Faces are classified in parallel when TBB is available.
 
 #include <CGAL/Mesh_repair/internal/detect_defects/mesh_access.h>
 #include <CGAL/Mesh_repair/quality.h>
@@ -33,7 +33,8 @@ struct Shape_thresholds {
   double aspect_ratio = 0.25;  ///< Pernot 4.1: Q below it is degenerated
 };
 
-/// What one face is: 0 fine, 1 degenerate, 2 sliver; plus its measures.
+/// What one face is: 0 fine, 1 badly shaped (zero area, needle or cap), 2 sliver; plus its
+/// measures.
 struct Face_shape {
   int verdict = 0;
   Degeneracy kind = Degeneracy::zero_area;
@@ -106,7 +107,7 @@ void classify_faces(const Access& mesh, const Shape_thresholds& thresholds, Defe
   for (std::size_t i = 0; i < all.size(); ++i) {
     const Face_shape& s = shapes[i];
     if (s.verdict == 1) {
-      report.degenerate_faces.push_back(
+      report.badly_shaped_faces.push_back(
           {mesh.index(all[i]), s.kind, mesh.centroid(all[i]), s.ratio, s.max_angle});
       if (s.kind == Degeneracy::zero_area) zero_area[mesh.index(all[i])] = 1;
     } else if (s.verdict == 2) {

@@ -112,8 +112,8 @@ inline void write_non_manifold(Json_writer& json, const Defect_report& r) {
 }
 
 inline void write_face_shapes(Json_writer& json, const Defect_report& r) {
-  json.key("degenerate_face_details").begin_array();
-  for (const auto& d : r.degenerate_faces) {
+  json.key("badly_shaped_face_details").begin_array();
+  for (const auto& d : r.badly_shaped_faces) {
     json.begin_object()
         .field("face", d.face)
         .field("kind", name(d.kind))
@@ -204,6 +204,8 @@ inline void write_json(Json_writer& json, const Defect_report& r) {
       .field("duplicated_faces", c.duplicated_faces)
       .field("inconsistent_orientation", c.inconsistent_orientation)
       .field("degenerate_faces", c.degenerate_faces)
+      .field("needles", c.needles)
+      .field("caps", c.caps)
       .field("slivers", c.slivers)
       .field("small_gaps", c.small_gaps)
       .field("t_junctions", c.t_junctions)
@@ -263,10 +265,18 @@ inline std::string summary(const Defect_report& r, std::size_t examples = 3) {
     out << "  " << point(r.non_manifold_vertices[i].point) << '\n';
   out << "duplicated faces:       " << c.duplicated_faces << '\n';
   out << "inconsistent orientation (faces): " << c.inconsistent_orientation << '\n';
-  out << "degenerate faces:       " << c.degenerate_faces << '\n';
-  for (std::size_t i = 0; i < r.degenerate_faces.size() && i < examples; ++i)
-    out << "  face " << r.degenerate_faces[i].face << " (" << name(r.degenerate_faces[i].kind)
-        << ") at " << point(r.degenerate_faces[i].centroid) << '\n';
+  auto shapes = [&](Degeneracy kind) {
+    std::size_t shown = 0;
+    for (const auto& f : r.badly_shaped_faces)
+      if (f.kind == kind && shown++ < examples)
+        out << "  face " << f.face << " at " << point(f.centroid) << '\n';
+  };
+  out << "degenerate faces (zero area): " << c.degenerate_faces << '\n';
+  shapes(Degeneracy::zero_area);
+  out << "needles:                " << c.needles << '\n';
+  shapes(Degeneracy::needle);
+  out << "caps:                   " << c.caps << '\n';
+  shapes(Degeneracy::cap);
   out << "slivers:                " << c.slivers << '\n';
   out << "small gaps (tolerance " << r.tolerance << (r.tolerance_derived ? ", derived" : "")
       << "): " << c.small_gaps << '\n';

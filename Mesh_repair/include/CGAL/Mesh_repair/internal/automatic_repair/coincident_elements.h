@@ -1,0 +1,375 @@
+// Copyright (c) 2026 Mesh_repair developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_MESH_REPAIR_INTERNAL_AUTOMATIC_REPAIR_COINCIDENT_ELEMENTS_H
+#define CGAL_MESH_REPAIR_INTERNAL_AUTOMATIC_REPAIR_COINCIDENT_ELEMENTS_H
+
+// The last step of automatic_repair: the output as a file shows it. A file stores positions, and
+// a reader that merges coincident points (CGAL's read_polygon_mesh, which repairs the soup first)
+// sees vertices at one position as one vertex. The step
+// - removes faces that duplicate another one by position (the same three points, in either
+//   orientation): per group, either all of them (a zero-volume wall between two shells, whose
+//   edges then carry two faces) or all but one, whichever leaves fewer edges with more than two
+//   faces (ties keep one);
+// - removes isolated vertices (a file would keep them, a reader drops them);
+// - stitches coincident borders again (CGAL's stitch_borders): the merges of coincident vertices
+//   that keep the surface manifold;
+// - counts what stays split: positions whose faces form several fans (non-manifold vertices) and
+//   segments carried by more than two faces (non-manifold edges), by position, as a merging
+//   reader sees them. `manifold` means none, by position and in the halfedge structure.
+// Then the lines of `remaining` are listed again from the updated figures and what was left on
+// purpose moves to `kept`.
+
+#include <CGAL/Mesh_repair/internal/automatic_repair/repair_steps.h>
+#include <CGAL/Mesh_repair/internal/detect_defects/coincident_elements.h>
+
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_mesh_to_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair.h>
+#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+
+#include <algorithm>
+#include <array>
+#include <type_traits>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Mesh_repair {
+namespace internal {
+
+/// What the coincident-elements step found and changed.
+struct Coincidence_census {
+  std::size_t duplicated_faces_removed = 0;    ///< faces removed as duplicates by position
+  std::size_t zero_volume_groups_removed = 0;  ///< groups removed whole (walls between shells)
+  std::size_t isolated_vertices_removed = 0;
+  std::size_t halfedge_pairs_stitched = 0;
+  std::size_t non_manifold_vertices = 0, non_manifold_edges = 0, coincident_vertices = 0;
+  std::size_t duplicated_faces_left = 0;
+  /// Positions of several vertices whose faces, merged, would form one fan (stitching could not
+  /// join them: faces glued the wrong way round); the mesh is then rebuilt as a reader builds it.
+  std::size_t mergeable_positions = 0;
+  std::size_t rebuilt = 0;  ///< 1 when the mesh was rebuilt from its soup
+};
+
+template <class PolygonMesh, class VertexPointMap, class GeomTraits>
+class Coincident_elements {
+ public:
+  using Graph_traits = boost::graph_traits<PolygonMesh>;
+  using vertex_descriptor = typename Graph_traits::vertex_descriptor;
+  using halfedge_descriptor = typename Graph_traits::halfedge_descriptor;
+  using face_descriptor = typename Graph_traits::face_descriptor;
+
+  Coincident_elements(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits)
+      : pm_(pm), vpm_(vpm), traits_(traits), vim_(CGAL::get_initialized_vertex_index_map(pm)) {}
+
+  /// Removes the duplicated faces by position; returns how many faces were removed.
+  std::size_t remove_duplicated_faces(Coincidence_census& census) {
+    sort_positions();
+    std::vector<std::pair<std::array<std::size_t, 3>, face_descriptor>> keyed;
+    for (face_descriptor f : faces(pm_)) {
+      const halfedge_descriptor h = halfedge(f, pm_);
+      if (next(next(next(h, pm_), pm_), pm_) != h) continue;  // triangles only
+      std::array<std::size_t, 3> key{position(source(h, pm_)), position(target(h, pm_)),
+                                     position(target(next(h, pm_), pm_))};
+      std::sort(key.begin(), key.end());
+      if (key[0] == key[1] || key[1] == key[2]) continue;  // zero-length edge: degenerate
+      keyed.emplace_back(key, f);
+    }
+    std::sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) {
+      return a.first < b.first || (a.first == b.first && a.second < b.second);
+    });
+    std::vector<face_descriptor> doomed;
+    for (std::size_t i = 0; i < keyed.size();) {
+      std::size_t j = i + 1;
+      while (j < keyed.size() && keyed[j].first == keyed[i].first) ++j;
+      if (j - i > 1) {
+        std::vector<face_descriptor> group;
+        for (std::size_t k = i; k < j; ++k) group.push_back(keyed[k].second);
+        choose_removals(keyed[i].first, group, doomed, census);
+      }
+      i = j;
+    }
+    for (face_descriptor f : doomed) CGAL::Euler::remove_face(halfedge(f, pm_), pm_);
+    census.duplicated_faces_removed = doomed.size();
+    return doomed.size();
+  }
+
+  /// Counts non-manifold vertices and edges and coincident vertices by position (the
+  /// definitions of detect_defects).
+  void count(Coincidence_census& census) const {
+    const auto vim = CGAL::get_initialized_vertex_index_map(pm_);
+    const auto fim = CGAL::get_initialized_face_index_map(pm_);
+    const auto him = CGAL::get_initialized_halfedge_index_map(pm_);
+    using Access =
+        detect::Mesh_access<PolygonMesh, VertexPointMap, GeomTraits, std::decay_t<decltype(vim)>,
+                            std::decay_t<decltype(fim)>, std::decay_t<decltype(him)>>;
+    const Access access{pm_, vpm_, traits_, vim, fim, him};
+    const auto positions = detect::position_ids(access);
+    const auto found = detect::Coincidence_finder<Access>(access, positions).run();
+    census.non_manifold_vertices = found.non_manifold_vertices.size();
+    census.non_manifold_edges = found.non_manifold_edges.size();
+    census.duplicated_faces_left = found.duplicated_face_indices.size();
+    census.coincident_vertices = count_vertices(pm_) - positions.count;
+    std::vector<bool> non_manifold(positions.count, false);
+    for (const auto& v : found.non_manifold_vertices)
+      non_manifold[positions.id_of_vertex[v.vertex]] = true;
+    census.mergeable_positions = 0;
+    for (std::size_t p = 0; p < positions.count; ++p)
+      census.mergeable_positions += positions.shared[p] && !non_manifold[p] ? 1 : 0;
+  }
+
+  /// True when two vertices share a position (what stitching may merge).
+  bool any_shared_position() {
+    sort_positions();
+    return positions_ < count_vertices(pm_);
+  }
+
+ private:
+  void sort_positions() {
+    if (sorted_) return;
+    std::vector<vertex_descriptor> sorted(vertices(pm_).begin(), vertices(pm_).end());
+    auto less = traits_.less_xyz_3_object();
+    std::sort(sorted.begin(), sorted.end(), [&](vertex_descriptor a, vertex_descriptor b) {
+      return less(get(vpm_, a), get(vpm_, b));
+    });
+    auto equal = traits_.equal_3_object();
+    positions_ = 0;
+    position_of_.assign(num_vertices(pm_), 0);
+    for (std::size_t i = 0; i < sorted.size(); ++i) {
+      if (i == 0 || !equal(get(vpm_, sorted[i - 1]), get(vpm_, sorted[i]))) {
+        ++positions_;
+        vertices_at_.emplace_back();
+      }
+      position_of_[std::size_t(get(vim_, sorted[i]))] = positions_ - 1;
+      vertices_at_.back().push_back(sorted[i]);
+    }
+    sorted_ = true;
+  }
+
+  std::size_t position(vertex_descriptor v) const {
+    return position_of_[std::size_t(get(vim_, v))];
+  }
+
+  // The sorted positions of a triangle's corners.
+  std::array<std::size_t, 3> key_of(face_descriptor f) const {
+    const halfedge_descriptor h = halfedge(f, pm_);
+    std::array<std::size_t, 3> key{position(source(h, pm_)), position(target(h, pm_)),
+                                   position(target(next(h, pm_), pm_))};
+    std::sort(key.begin(), key.end());
+    return key;
+  }
+
+  // Distinct faces along the segment (p, q) by position, whatever their vertices; faces on the
+  // same three positions count once (a surface given twice is not a wall).
+  std::size_t faces_along(std::size_t p, std::size_t q) const {
+    std::vector<std::array<std::size_t, 3>> seen;
+    for (vertex_descriptor v : vertices_at_[p])
+      for (halfedge_descriptor h : halfedges_around_target(v, pm_)) {
+        if (position(source(h, pm_)) != q) continue;
+        if (!is_border(h, pm_)) seen.push_back(key_of(face(h, pm_)));
+        if (!is_border(opposite(h, pm_), pm_)) seen.push_back(key_of(face(opposite(h, pm_), pm_)));
+      }
+    std::sort(seen.begin(), seen.end());
+    return std::size_t(std::unique(seen.begin(), seen.end()) - seen.begin());
+  }
+
+  // Faces outside `group` glued to `f` through its halfedges.
+  std::size_t glued_outside(face_descriptor f, const std::vector<face_descriptor>& group) const {
+    std::size_t n = 0;
+    for (halfedge_descriptor h : halfedges_around_face(halfedge(f, pm_), pm_)) {
+      const face_descriptor g = face(opposite(h, pm_), pm_);
+      if (g != Graph_traits::null_face() && std::find(group.begin(), group.end(), g) == group.end())
+        ++n;
+    }
+    return n;
+  }
+
+  void choose_removals(const std::array<std::size_t, 3>& key,
+                       const std::vector<face_descriptor>& group,
+                       std::vector<face_descriptor>& doomed, Coincidence_census& census) const {
+    const std::size_t k = group.size();
+    std::size_t excess_keep_one = 0, excess_remove_all = 0;
+    for (const auto& edge : {std::make_pair(key[0], key[1]), std::make_pair(key[1], key[2]),
+                             std::make_pair(key[0], key[2])}) {
+      const std::size_t others = faces_along(edge.first, edge.second) - 1;
+      excess_keep_one += others + 1 > 2 ? others - 1 : 0;
+      excess_remove_all += others > 2 ? others - 2 : 0;
+    }
+    if (excess_remove_all < excess_keep_one) {
+      doomed.insert(doomed.end(), group.begin(), group.end());
+      ++census.zero_volume_groups_removed;
+      return;
+    }
+    // Keep the face most glued to the rest of the surface (the first on a tie).
+    std::size_t kept = 0;
+    for (std::size_t i = 1; i < k; ++i)
+      if (glued_outside(group[i], group) > glued_outside(group[kept], group)) kept = i;
+    for (std::size_t i = 0; i < k; ++i)
+      if (i != kept) doomed.push_back(group[i]);
+  }
+
+  PolygonMesh& pm_;
+  VertexPointMap vpm_;
+  const GeomTraits& traits_;
+  bool sorted_ = false;
+  std::size_t positions_ = 0;
+  typename CGAL::GetInitializedVertexIndexMap<PolygonMesh>::type vim_;
+  std::vector<std::size_t> position_of_;  ///< by vertex index
+  std::vector<std::vector<vertex_descriptor>> vertices_at_;
+};
+
+/// Rebuilds `pm` as a reader that merges coincident points builds it: the faces as a polygon
+/// soup, coincident points merged, oriented (CGAL's `orient_polygon_soup`, which keeps the
+/// orientation of the first face of each component and splits non-manifold vertices and edges),
+/// and built again in `pm` (emptied element by element, so its property maps stay). Returns false,
+/// `pm` untouched, when that soup is not a polygon mesh (a face with two corners at one point).
+template <class PolygonMesh, class VertexPointMap>
+bool rebuild_as_read(PolygonMesh& pm, VertexPointMap vpm) {
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  using Point = typename boost::property_traits<VertexPointMap>::value_type;
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  PMP::polygon_mesh_to_polygon_soup(pm, points, polygons, CGAL::parameters::vertex_point_map(vpm));
+  PMP::merge_duplicate_points_in_polygon_soup(points, polygons);
+  PMP::orient_polygon_soup(points, polygons);
+  if (!PMP::is_polygon_soup_a_polygon_mesh(polygons)) return false;
+  while (edges(pm).begin() != edges(pm).end()) remove_edge(*edges(pm).begin(), pm);
+  while (faces(pm).begin() != faces(pm).end()) remove_face(*faces(pm).begin(), pm);
+  while (vertices(pm).begin() != vertices(pm).end()) remove_vertex(*vertices(pm).begin(), pm);
+  PMP::polygon_soup_to_polygon_mesh(points, polygons, pm, CGAL::parameters::default_values(),
+                                    CGAL::parameters::vertex_point_map(vpm));
+  return true;
+}
+
+/// The verification figures of `result` from `pm` as it is now.
+template <class PolygonMesh>
+void verify_again(const PolygonMesh& pm, const Repair_options& options,
+                  const Coincidence_census& census, Repair_result& result, bool faces_changed) {
+  result.valid = CGAL::is_valid_polygon_mesh(pm);
+  std::vector<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor> pinched;
+  CGAL::Polygon_mesh_processing::non_manifold_vertices(pm, std::back_inserter(pinched));
+  result.non_manifold_vertices_left = census.non_manifold_vertices;
+  result.non_manifold_edges_left = census.non_manifold_edges;
+  result.coincident_vertices_left = census.coincident_vertices;
+  result.manifold =
+      pinched.empty() && census.non_manifold_vertices == 0 && census.non_manifold_edges == 0;
+  result.border_cycles_left = border_cycles(pm).size();
+  result.closed = result.border_cycles_left == 0;
+  if (faces_changed && options.detect_self_intersections) {
+    result.self_intersections_output = count_self_intersections(pm);
+    result.self_intersections_in_patches =
+        result.self_intersections_output > result.self_intersections_input
+            ? result.self_intersections_output - result.self_intersections_input
+            : 0;
+  }
+  result.output_vertices = count_vertices(pm);
+  result.output_faces = count_faces(pm);
+}
+
+template <class PolygonMesh, class VertexPointMap, class GeomTraits>
+void step_coincident_elements(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
+                              const Repair_options& options, Repair_result& result,
+                              Any_visitor visitor) {
+  Step_timer timer(result, "coincident elements", visitor);
+  Coincidence_census census;
+  bool changed = false;
+  {
+    Coincident_elements<PolygonMesh, VertexPointMap, GeomTraits> elements(pm, vpm, traits);
+    changed = elements.remove_duplicated_faces(census) > 0;
+  }
+  census.isolated_vertices_removed = CGAL::Polygon_mesh_processing::remove_isolated_vertices(pm);
+  Coincident_elements<PolygonMesh, VertexPointMap, GeomTraits> elements(pm, vpm, traits);
+  if (changed || elements.any_shared_position()) {
+    census.halfedge_pairs_stitched =
+        CGAL::Polygon_mesh_processing::stitch_borders(pm, CGAL::parameters::vertex_point_map(vpm));
+    changed = changed || census.halfedge_pairs_stitched > 0;
+  }
+  changed = changed || census.isolated_vertices_removed > 0;
+  Coincident_elements<PolygonMesh, VertexPointMap, GeomTraits>(pm, vpm, traits).count(census);
+  if (census.mergeable_positions > 0 && rebuild_as_read(pm, vpm)) {
+    census.rebuilt = 1;
+    census.halfedge_pairs_stitched +=
+        CGAL::Polygon_mesh_processing::stitch_borders(pm, CGAL::parameters::vertex_point_map(vpm));
+    changed = true;
+    Coincident_elements<PolygonMesh, VertexPointMap, GeomTraits>(pm, vpm, traits).count(census);
+  }
+  verify_again(pm, options, census, result, changed);
+  timer.count("duplicated_faces_removed", double(census.duplicated_faces_removed));
+  timer.count("zero_volume_groups_removed", double(census.zero_volume_groups_removed));
+  timer.count("isolated_vertices_removed", double(census.isolated_vertices_removed));
+  timer.count("halfedge_pairs_stitched", double(census.halfedge_pairs_stitched));
+  timer.count("non_manifold_vertices_kept", double(census.non_manifold_vertices));
+  timer.count("non_manifold_edges_kept", double(census.non_manifold_edges));
+  timer.count("coincident_vertices_kept", double(census.coincident_vertices));
+  timer.count("duplicated_faces_left", double(census.duplicated_faces_left));
+  timer.count("rebuilt_as_read", double(census.rebuilt));
+  timer.count("valid", result.valid);
+  timer.count("manifold", result.manifold);
+  timer.count("border_cycles_left", double(result.border_cycles_left));
+  if (census.non_manifold_vertices + census.non_manifold_edges > 0)
+    timer.step().notes.push_back(
+        "vertices where separate sheets of the surface touch are kept split: merging them would "
+        "make the halfedge structure non-manifold; a reader that merges coincident points sees "
+        "the non-manifold vertices and edges");
+}
+
+/// Moves what was left on purpose from `remaining` to `kept`, and says what "non-manifold"
+/// means. The lines are those of `list_remaining`.
+inline void sort_out_kept(Repair_result& result, const Repair_options& options) {
+  auto has = [](const std::string& line, const char* text) {
+    return line.find(text) != std::string::npos;
+  };
+  std::vector<std::string> remaining;
+  bool border_line = false;
+  for (const std::string& line : result.remaining) {
+    if (has(line, "larger than the size limit") || has(line, "outline(s) of open sheets") ||
+        has(line, "between separate components") ||
+        (has(line, "(already in the input)") && !options.repair_self_intersections)) {
+      result.kept.push_back(line);
+    } else if (line == "non-manifold vertices remain" &&
+               result.non_manifold_vertices_left + result.non_manifold_edges_left > 0) {
+      remaining.push_back(std::to_string(result.non_manifold_vertices_left) +
+                          " non-manifold vertex(es) and " +
+                          std::to_string(result.non_manifold_edges_left) +
+                          " non-manifold edge(s) where sheets of the surface touch (kept split "
+                          "in the mesh; a reader that merges coincident points sees them)");
+    } else {
+      border_line = border_line || has(line, "border cycle(s) remain");
+      remaining.push_back(line);
+    }
+  }
+  // Holes left open, each with the islands it was to be filled with.
+  std::size_t explained = 0;
+  for (const auto& hole : result.holes.holes)
+    if (!hole.filled) explained += 1 + hole.island_cycles;
+  if (!border_line && result.border_cycles_left > explained)
+    remaining.push_back(std::to_string(result.border_cycles_left - explained) +
+                        " border cycle(s) remain besides the holes listed");
+  result.remaining = std::move(remaining);
+}
+
+/// `run_repair_pipeline`, then the coincident-elements step and the final lists.
+template <class PolygonMesh, class VertexPointMap, class GeomTraits>
+Repair_result run_automatic_repair(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
+                                   const Repair_options& options, Any_visitor visitor) {
+  Repair_result result = run_repair_pipeline(pm, vpm, traits, options, visitor);
+#ifdef CGAL_LINKED_WITH_TBB
+  std::unique_ptr<tbb::global_control> limit;
+  if (options.fill.number_of_threads > 0)
+    limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                  std::size_t(options.fill.number_of_threads));
+#endif
+  if (!result.cancelled) step_coincident_elements(pm, vpm, traits, options, result, visitor);
+  result.remaining.clear();
+  list_remaining(result);
+  sort_out_kept(result, options);
+  return result;
+}
+
+}  // namespace internal
+}  // namespace Mesh_repair
+}  // namespace CGAL
+
+#endif  // CGAL_MESH_REPAIR_INTERNAL_AUTOMATIC_REPAIR_COINCIDENT_ELEMENTS_H
