@@ -358,6 +358,12 @@ def _child_main(child):
     except MemoryError:
         print("mesh_repair: out of memory", file=sys.stderr)
         return _EXIT_OUT_OF_MEMORY
+    except RuntimeError as error:
+        # Under the address-space limit a thread's stack is memory too: TBB's pool cannot start.
+        if "pthread_create" not in str(error):
+            raise
+        print(f"mesh_repair: out of memory ({error})", file=sys.stderr)
+        return _EXIT_OUT_OF_MEMORY
     seconds = time.monotonic() - start
     report = result.report
     report["output"], report["seconds"] = child["output"], seconds

