@@ -63,8 +63,9 @@ const char* const repair_help =
     "merged); the report's valid, closed, manifold and defects after are that reading's.\n"
     "exit status: 0 complete: valid, every requested repair done, nothing left;\n"
     "             3 complete except what was kept on purpose (listed): holes over\n"
-    "               --max-hole-size/--max-hole-edges, outlines of open sheets, the input's own\n"
-    "               self-intersections when --remove-self-intersections is not given;\n"
+    "               --max-hole-size/--max-hole-edges, outlines of open sheets,\n"
+    "               self-intersections between separate components, the input's own\n"
+    "               self-intersections with --keep-self-intersections;\n"
     "             1 incomplete: something asked was not done (listed);\n"
     "             2 bad usage or unreadable input\n";
 
