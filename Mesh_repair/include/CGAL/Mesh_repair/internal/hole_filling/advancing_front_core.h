@@ -665,6 +665,7 @@ class Advancing_front {
   bool any_stored_near(const CGAL::Bbox_3& box, Test test) const {
     bool found = false;
     const auto visit = [&](std::size_t index) {
+      ++visits_;
       if (visit_stamp_[index] == visit_) return;
       visit_stamp_[index] = visit_;
       found = test(index);
@@ -999,66 +1000,132 @@ class Advancing_front {
 
   /// Closes one loop of the stuck front: the triangulation of its polygon (no new point) of
   /// least total area among those whose every triangle passes the exact 3D test against the
-  /// triangles already there and creates no existing edge (dynamic programming over the
-  /// polygon, O(n^3)); well-shaped triangles first, any non-degenerate ones if that fails.
-  /// Triangles are emitted so that each is attached to the border of its time.
+  /// triangles already there and creates no existing edge; well-shaped triangles first, any
+  /// non-degenerate ones if that fails.
   bool close_remnant(const std::vector<std::size_t>& loop) {
     const std::size_t n = loop.size();
     if (n < 3 || n > options_.max_remnant_edges) return false;
-    const double infinite = std::numeric_limits<double>::infinity();
     for (bool shaped : {true, false}) {
-      std::vector<double> weight(n * n, infinite);
-      std::vector<int> apex(n * n, -1);
-      for (std::size_t i = 0; i + 1 < n; ++i) weight[i * n + i + 1] = 0;
-      const auto valid = [&](std::size_t i, std::size_t k, std::size_t j) {
-        const std::size_t a = loop[i], b = loop[k], c = loop[j];
-        if (a == b || b == c || a == c) return false;
-        for (const auto& chord :
-             {std::make_pair(i, k), std::make_pair(k, j), std::make_pair(i, j)}) {
-          if (chord.second == chord.first + 1 || (chord.first == 0 && chord.second == n - 1))
-            continue;  // a loop edge
-          if (edges_.count(key(loop[chord.first], loop[chord.second]))) return false;
-        }
-        Fan fan{{{a, b, c}}, {}};
-        if (shaped && !fan_is_well_shaped(fan)) return false;
-        return !meets_stored_triangle({a, b, c}, {points_[a], points_[b], points_[c]});
-      };
-      for (std::size_t gap = 2; gap < n; ++gap) {
-        for (std::size_t i = 0; i + gap < n; ++i) {
-          const std::size_t j = i + gap;
-          for (std::size_t k = i + 1; k < j; ++k) {
-            const double w = weight[i * n + k] + weight[k * n + j];
-            if (!(w < weight[i * n + j])) continue;
-            if (!valid(i, k, j)) continue;
-            const Vec3 area = cross(sub(points_[loop[k]], points_[loop[i]]),
-                                    sub(points_[loop[j]], points_[loop[i]]));
-            const double total = w + 0.5 * norm(area);
-            if (total < weight[i * n + j]) {
-              weight[i * n + j] = total;
-              apex[i * n + j] = int(k);
-            }
+      if (close_remnant_with(loop, shaped)) return true;
+    }
+    return false;
+  }
+
+  /// The least-area triangulation whose triangles all pass the exact 3D test, found in two
+  /// bounded stages. Lazy: the dynamic program over the polygon (O(n^3) arithmetic) runs with the
+  /// cheap tests only, the exact test runs on the triangles of its optimum alone, those that fail
+  /// are excluded and the program runs again; each round's optimum is over a superset of the
+  /// valid triangulations, so the first whose triangles all pass is the answer, found with a few
+  /// hundred exact tests where testing every candidate took minutes (a 126-edge loop spanning
+  /// its mesh: each of the O(n^3) candidates scanned every stored triangle). Eager, when
+  /// `remnant_lazy_rounds` rounds did not settle it (loops with no valid triangulation, or many
+  /// failing candidates): the program tests each candidate that would improve on the best so
+  /// far, reusing every answer, until done or `remnant_visit_budget` stored triangles were
+  /// visited; the loop is then left open.
+  static constexpr int remnant_lazy_rounds = 64;
+  static constexpr std::size_t remnant_visit_budget = 60'000'000;
+  bool close_remnant_with(const std::vector<std::size_t>& loop, bool shaped) {
+    const std::size_t n = loop.size();
+    enum : char { unknown, cheap_ok, passes, fails };
+    std::vector<char> state(n * n * n, unknown);  // at most 8 MB (200-edge loops)
+    const auto exact_test = [&](std::size_t i, std::size_t k, std::size_t j) {
+      const std::size_t a = loop[i], b = loop[k], c = loop[j];
+      return !meets_stored_triangle({a, b, c}, {points_[a], points_[b], points_[c]});
+    };
+    bool eager = false;
+    const std::size_t visits_at_start = visits_;
+    const auto allowed = [&](std::size_t i, std::size_t k, std::size_t j) {
+      char& s = state[(i * n + k) * n + j];
+      if (s == unknown) s = cheap_test(loop, i, k, j, shaped) ? cheap_ok : fails;
+      if (s == cheap_ok && eager && visits_ - visits_at_start <= remnant_visit_budget)
+        s = exact_test(i, k, j) ? passes : fails;
+      return s == passes || (s == cheap_ok && !eager);
+    };
+    for (int round = 0; round < remnant_lazy_rounds; ++round) {
+      const std::vector<std::array<std::size_t, 3>> triangles =
+          least_area_triangulation(loop, allowed);
+      if (triangles.empty()) return false;
+      bool all_pass = true;
+      for (const auto& t : triangles) {
+        char& s = state[(t[0] * n + t[1]) * n + t[2]];
+        if (s == cheap_ok) s = exact_test(t[0], t[1], t[2]) ? passes : fails;
+        all_pass = all_pass && s == passes;
+      }
+      if (all_pass) return add_remnant_triangles(loop, triangles);
+    }
+    eager = true;
+    const std::vector<std::array<std::size_t, 3>> triangles =
+        least_area_triangulation(loop, allowed);
+    if (triangles.empty() || visits_ - visits_at_start > remnant_visit_budget) return false;
+    return add_remnant_triangles(loop, triangles);
+  }
+
+  /// The tests of a remnant triangle (positions i < k < j in `loop`) that need no search: three
+  /// distinct points, no chord that is already an edge, and, when `shaped`, no small angle.
+  bool cheap_test(const std::vector<std::size_t>& loop, std::size_t i, std::size_t k, std::size_t j,
+                  bool shaped) const {
+    const std::size_t n = loop.size(), a = loop[i], b = loop[k], c = loop[j];
+    if (a == b || b == c || a == c) return false;
+    for (const auto& chord : {std::make_pair(i, k), std::make_pair(k, j), std::make_pair(i, j)}) {
+      if (chord.second == chord.first + 1 || (chord.first == 0 && chord.second == n - 1))
+        continue;  // a loop edge
+      if (edges_.count(key(loop[chord.first], loop[chord.second]))) return false;
+    }
+    return !shaped || fan_is_well_shaped(Fan{{{a, b, c}}, {}});
+  }
+
+  bool add_remnant_triangles(const std::vector<std::size_t>& loop,
+                             const std::vector<std::array<std::size_t, 3>>& triangles) {
+    for (const auto& t : triangles) {
+      const std::size_t a = loop[t[0]], b = loop[t[1]], c = loop[t[2]];
+      // Each triangle passed the test against what was there before the loop's
+      // triangulation, not against the loop's other triangles: test it against them too.
+      if (meets_stored_triangle({a, b, c}, {points_[a], points_[b], points_[c]})) unchecked_ = true;
+      add_triangle(a, b, c);
+    }
+    return true;
+  }
+
+  /// The triangulation of the polygon `loop` of least total area whose triangles (i, k, j), as
+  /// positions in the loop with i < k < j, satisfy `allowed` (empty when there is none). The
+  /// triangles come in an order where each is attached to the border of its time.
+  template <class Allowed>
+  std::vector<std::array<std::size_t, 3>> least_area_triangulation(
+      const std::vector<std::size_t>& loop, const Allowed& allowed) const {
+    const std::size_t n = loop.size();
+    const double infinite = std::numeric_limits<double>::infinity();
+    std::vector<double> weight(n * n, infinite);
+    std::vector<int> apex(n * n, -1);
+    for (std::size_t i = 0; i + 1 < n; ++i) weight[i * n + i + 1] = 0;
+    for (std::size_t gap = 2; gap < n; ++gap) {
+      for (std::size_t i = 0; i + gap < n; ++i) {
+        const std::size_t j = i + gap;
+        for (std::size_t k = i + 1; k < j; ++k) {
+          const double w = weight[i * n + k] + weight[k * n + j];
+          if (!(w < weight[i * n + j]) || !allowed(i, k, j)) continue;
+          const Vec3 area = cross(sub(points_[loop[k]], points_[loop[i]]),
+                                  sub(points_[loop[j]], points_[loop[i]]));
+          const double total = w + 0.5 * norm(area);
+          if (total < weight[i * n + j]) {
+            weight[i * n + j] = total;
+            apex[i * n + j] = int(k);
           }
         }
       }
-      if (apex[n - 1] < 0) continue;
-      std::vector<std::pair<std::size_t, std::size_t>> stack{{0, n - 1}};
-      while (!stack.empty()) {
-        const auto [i, j] = stack.back();
-        stack.pop_back();
-        if (j < i + 2) continue;
-        const std::size_t k = std::size_t(apex[i * n + j]);
-        // Each triangle passed the test against what was there before the loop's
-        // triangulation, not against the loop's other triangles: test it against them too.
-        if (meets_stored_triangle({loop[i], loop[k], loop[j]},
-                                  {points_[loop[i]], points_[loop[k]], points_[loop[j]]}))
-          unchecked_ = true;
-        add_triangle(loop[i], loop[k], loop[j]);
-        stack.emplace_back(k, j);
-        stack.emplace_back(i, k);
-      }
-      return true;
     }
-    return false;
+    std::vector<std::array<std::size_t, 3>> triangles;
+    if (apex[n - 1] < 0) return triangles;
+    std::vector<std::pair<std::size_t, std::size_t>> stack{{0, n - 1}};
+    while (!stack.empty()) {
+      const auto [i, j] = stack.back();
+      stack.pop_back();
+      if (j < i + 2) continue;
+      const std::size_t k = std::size_t(apex[i * n + j]);
+      triangles.push_back({i, k, j});
+      stack.emplace_back(k, j);
+      stack.emplace_back(i, k);
+    }
+    return triangles;
   }
 
   /// The loops of the live front edges.
@@ -1211,6 +1278,7 @@ class Advancing_front {
   std::unordered_map<std::uint64_t, std::vector<Cell_entry>> triangle_grid_;
   mutable std::vector<std::uint32_t> visit_stamp_;
   mutable std::uint32_t visit_ = 0;
+  mutable std::size_t visits_ = 0;  ///< stored triangles visited, the unit of a search's work
   std::size_t alive_ = 0, border_count_ = 0, max_triangles_ = 0;
   double mean_length_ = 1, cell_ = 1, triangle_cell_ = 1;
   Vec3 hole_normal_{0, 0, 1};
