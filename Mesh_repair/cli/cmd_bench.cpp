@@ -8,12 +8,9 @@
 #include "common.h"
 #include "picture.h"
 
-#include <CGAL/Mesh_repair/fill_holes.h>
-#include <CGAL/Mesh_repair/hole_benchmark.h>
-#include <CGAL/Mesh_repair/json_writer.h>
+#include <CGAL/Mesh_repair/bench_holes.h>
 #include <CGAL/Mesh_repair/io.h>
-
-#include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Mesh_repair/json_writer.h>
 
 #include <algorithm>
 #include <cctype>
@@ -56,28 +53,7 @@ const char* const bench_help =
 namespace {
 
 namespace MR = CGAL::Mesh_repair;
-using halfedge_descriptor = Mesh::Halfedge_index;
 using Hole = MR::Punched_hole<Mesh, Point>;
-
-struct Method {
-  std::string name;
-  MR::Fill_method method;
-  int continuity;  // fairing continuity for liepa; -1 for the method's default
-};
-
-const std::vector<Method>& known_methods() {
-  static const std::vector<Method> methods = {
-      {"advancing_front", MR::Fill_method::advancing_front, -1},
-      {"liepa", MR::Fill_method::liepa, -1},
-      {"liepa_c0", MR::Fill_method::liepa, 0},
-      {"liepa_c1", MR::Fill_method::liepa, 1},
-      {"liepa_c2", MR::Fill_method::liepa, 2},
-      {"shape_prediction", MR::Fill_method::shape_prediction, -1},
-      {"curvature_variation", MR::Fill_method::curvature_variation, -1},
-      {"self_validated", MR::Fill_method::self_validated, -1},
-      {"auto", MR::Fill_method::automatic, -1}};
-  return methods;
-}
 
 std::vector<std::string> split_list(const std::string& text) {
   std::vector<std::string> items;
@@ -85,23 +61,6 @@ std::vector<std::string> split_list(const std::string& text) {
   for (std::string item; std::getline(stream, item, ',');)
     if (!item.empty()) items.push_back(item);
   return items;
-}
-
-std::vector<Method> parse_methods(const std::string& text) {
-  std::vector<Method> methods;
-  for (const std::string& name : split_list(text)) {
-    if (name == "all") {
-      for (const Method& m : known_methods())
-        if (m.name != "liepa") methods.push_back(m);
-      continue;
-    }
-    auto it = std::find_if(known_methods().begin(), known_methods().end(),
-                           [&](const Method& m) { return m.name == name; });
-    if (it == known_methods().end()) throw Input_error("unknown method '" + name + "'");
-    methods.push_back(*it);
-  }
-  if (methods.empty()) throw Input_error("--methods needs at least one method");
-  return methods;
 }
 
 struct Bench_case {
@@ -113,11 +72,7 @@ struct Bench_case {
 
 struct Options {
   std::vector<Bench_case> cases;
-  std::size_t holes = 0;
-  std::vector<double> radii;
-  std::vector<unsigned int> seeds;
-  std::vector<Method> methods;
-  MR::Hole_shape shape = MR::Hole_shape::disc;
+  MR::Hole_bench_options bench;  // holes, radii, seeds, methods, shape
   std::string out;
   bool plots = true;
   bool pictures = true;
@@ -172,19 +127,23 @@ Options parse_options(const std::vector<std::string>& args) {
   if (o.cases.empty()) throw Input_error("give at least one --mesh, --meshes or --analytic");
   const long long holes = arguments.get_int("--holes", 1);
   if (holes < 1) throw Input_error("--holes must be at least 1");
-  o.holes = std::size_t(holes);
+  o.bench.holes = std::size_t(holes);
+  o.bench.radii.clear();
   for (const std::string& r : split_list(arguments.get("--radius", "0.05"))) {
     const double radius = parse_double(r, "--radius");
     if (radius <= 0 || radius >= 0.5) throw Input_error("--radius must be in (0, 0.5)");
-    o.radii.push_back(radius);
+    o.bench.radii.push_back(radius);
   }
+  o.bench.seeds.clear();
   for (const std::string& s : split_list(arguments.get("--seeds", "1"))) {
     const long long seed = parse_int(s, "--seeds");
     if (seed < 0) throw Input_error("--seeds must be non-negative");
-    o.seeds.push_back(static_cast<unsigned int>(seed));
+    o.bench.seeds.push_back(static_cast<unsigned int>(seed));
   }
-  o.methods = parse_methods(arguments.get("--methods", "liepa"));
-  if (!MR::hole_shape_from_string(arguments.get("--shape", "disc"), o.shape))
+  const std::string error = MR::bench_methods_from_names(
+      split_list(arguments.get("--methods", "liepa")), o.bench.methods);
+  if (!error.empty()) throw Input_error("--methods: " + error);
+  if (!MR::hole_shape_from_string(arguments.get("--shape", "disc"), o.bench.shape))
     throw Input_error("--shape expects disc, jagged, elongated or ring");
   o.out = arguments.get("--out");
   if (o.out.empty()) throw Input_error("--out DIR is required");
@@ -195,15 +154,7 @@ Options parse_options(const std::vector<std::string>& args) {
   return o;
 }
 
-MR::Hole_fill_report fill_one(Mesh& mesh, halfedge_descriptor border, const Method& method,
-                              unsigned int seed) {
-  const auto np = MR::parameters::fill_method(method.method).random_seed(seed);
-  if (method.continuity >= 0)
-    return MR::fill_hole(mesh, border, np.fairing_continuity(unsigned(method.continuity)));
-  return MR::fill_hole(mesh, border, np);
-}
-
-// One line of results.jsonl, kept for the table.
+// What the tables and pictures need of a line of results.jsonl.
 struct Row {
   std::string mesh, method, failure, used;
   double radius = 0;
@@ -230,80 +181,33 @@ const std::vector<std::tuple<std::string, std::string, bool>>& table_measures() 
   return measures;
 }
 
-struct Case_context {
-  std::string name;
-  bool analytic = false;
-  double diagonal = 0;
-  std::size_t input_border_cycles = 0;
-  std::function<double(const Point&)> exact;
-};
+using Case_context = MR::Bench_surface<Point>;
 
-std::size_t count_border_cycles(const Mesh& mesh) {
-  std::vector<halfedge_descriptor> cycles;
-  CGAL::Polygon_mesh_processing::extract_boundary_cycles(mesh, std::back_inserter(cycles));
-  return cycles.size();
-}
-
-void write_row(std::ostream& out, const Case_context& context, const Options& options,
-               double radius, unsigned int seed, std::size_t hole_index, const Hole& hole,
-               const Method& method, const MR::Hole_fill_report& report,
-               const MR::Hole_fill_metrics& m, bool mesh_closed, bool mesh_valid, Row& row) {
-  MR::Json_writer json(out, false);
-  json.begin_object();
-  json.field("mesh", context.name).field("analytic", context.analytic);
-  json.field("shape", MR::to_string(options.shape)).field("radius", radius).field("seed", seed);
-  json.field("hole", hole_index).field("method", method.name);
-  json.field("border_edges", hole.outer_border_edges)
-      .field("island_cycles", hole.island_border_halfedges.size())
-      .field("perimeter", hole.outer_perimeter)
-      .field("removed_faces", hole.removed_faces)
-      .field("requested_radius", hole.requested_radius)
-      .field("achieved_radius", hole.achieved_radius)
-      .field("diagonal", context.diagonal);
-  json.field("reported_filled", report.filled).field("failure", report.failure);
-  json.field("used_method", MR::to_string(report.used))
-      .field("detected_island_cycles", report.island_cycles);
-  std::string notes;
-  for (const std::string& note : report.notes) notes += (notes.empty() ? "" : "; ") + note;
-  for (const std::string& fallback : report.fallbacks)
-    notes += (notes.empty() ? "fallback " : "; fallback ") + fallback;
-  json.field("notes", notes);
-  json.field("filled", m.filled).field("closed", m.closed).field("bounded", m.bounded);
-  json.field("patch_faces", m.patch_faces).field("patch_vertices", m.patch_vertices);
-  json.field("samples", m.samples);
-  row.values = {{"e1", m.e1},
-                {"e2", m.e2},
-                {"einf", m.einf},
-                {"e1_rel", m.e1_rel},
-                {"e2_rel", m.e2_rel},
+Row table_row(const MR::Hole_bench_row& r) {
+  const MR::Hole_fill_metrics& m = r.metrics;
+  Row row;
+  row.mesh = r.mesh;
+  row.method = r.method;
+  row.failure = r.report.failure;
+  row.used = MR::to_string(r.report.used);
+  row.radius = r.radius;
+  row.seed = r.seed;
+  row.hole = r.hole;
+  row.analytic = r.analytic;
+  row.filled = m.filled;
+  row.closed = m.closed;
+  row.self_intersecting = m.self_intersections > 0;
+  row.values = {{"e2_rel", m.e2_rel},
                 {"einf_rel", m.einf_rel},
-                {"e1_nodes", m.e1_nodes},
-                {"e2_nodes", m.e2_nodes},
-                {"einf_nodes", m.einf_nodes},
-                {"hausdorff", m.hausdorff},
+                {"e1_rel", m.e1_rel},
                 {"hausdorff_rel", m.hausdorff_rel},
                 {"normal_deviation_max_deg", m.normal_deviation_max_deg},
                 {"normal_deviation_mean_deg", m.normal_deviation_mean_deg},
                 {"curvature_jump", m.curvature_jump},
                 {"min_alpha", m.min_alpha},
-                {"mean_alpha", m.mean_alpha},
                 {"min_angle_deg", m.min_angle_deg},
-                {"seconds", report.seconds}};
-  for (const auto& [key, value] : row.values) json.field(key, value);
-  json.field("self_intersections", m.self_intersections);
-  json.field("mesh_closed", mesh_closed).field("mesh_valid", mesh_valid);
-  json.end_object();
-  row.mesh = context.name;
-  row.method = method.name;
-  row.failure = report.failure;
-  row.used = MR::to_string(report.used);
-  row.radius = radius;
-  row.seed = seed;
-  row.hole = hole_index;
-  row.analytic = context.analytic;
-  row.filled = m.filled;
-  row.closed = m.closed;
-  row.self_intersecting = m.self_intersections > 0;
+                {"seconds", r.report.seconds}};
+  return row;
 }
 
 // --- pictures --------------------------------------------------------------------------------
@@ -342,7 +246,7 @@ class Hole_pictures {
 
   // The panel of `method` for each hole: its patch in `filled`, coloured by distance to the truth.
   void add_method(const Mesh& filled, const std::vector<std::vector<Mesh::Face_index>>& patches,
-                  const Method& method, const Row* rows) {
+                  const MR::Bench_method& method, const Row* rows) {
     for (std::size_t i = 0; i < views_.size(); ++i) {
       const Row& row = rows[i];
       Picture_panel panel = method_panel(filled, i, patches[i], row);
@@ -473,60 +377,71 @@ class Hole_pictures {
   std::vector<View> views_;
 };
 
-// Fills every hole of `holed` with `method` and appends one row per hole.
-void run_method(const Mesh& holed, const std::vector<Hole>& holes, const Case_context& context,
-                const Options& options, double radius, unsigned int seed, const Method& method,
-                std::ostream& jsonl, std::vector<Row>& rows, Hole_pictures* pictures) {
-  Mesh mesh = holed;  // Surface_mesh copies keep every descriptor, so `holes` stay valid
-  std::vector<MR::Hole_fill_report> reports;
-  for (const Hole& hole : holes) {
-    const auto start = std::chrono::steady_clock::now();
-    MR::Hole_fill_report report;
-    try {
-      report = fill_one(mesh, hole.border_halfedge, method, seed);
-    } catch (const std::exception& e) {
-      report.failure = std::string("exception: ") + e.what();
-    }
-    report.seconds = seconds_since(start);
-    reports.push_back(report);
-  }
-  std::vector<std::vector<Mesh::Face_index>> patches;
-  for (const Hole& hole : holes) {
-    bool bounded = true;
-    patches.push_back(MR::hole_patch_faces(mesh, hole, bounded));
-  }
-  const bool triangulated = CGAL::is_triangle_mesh(mesh);
-  const std::vector<std::size_t> intersections =
-      triangulated ? MR::count_patch_self_intersections(mesh, patches)
-                   : std::vector<std::size_t>(holes.size(), 0);
-  const bool mesh_valid = CGAL::is_valid_polygon_mesh(mesh);
-  const bool mesh_closed = count_border_cycles(mesh) == context.input_border_cycles;
-  for (std::size_t i = 0; i < holes.size(); ++i) {
-    MR::Hole_fill_metrics m =
-        MR::measure_filled_hole(mesh, holes[i], context.diagonal, context.exact);
-    m.self_intersections = intersections[i];
-    rows.emplace_back();
-    write_row(jsonl, context, options, radius, seed, i, holes[i], method, reports[i], m,
-              mesh_closed, mesh_valid, rows.back());
-  }
-  if (pictures) pictures->add_method(mesh, patches, method, &rows[rows.size() - holes.size()]);
-}
-
 Mesh load_case(const Bench_case& c, Case_context& context) {
   Mesh mesh;
   if (c.analytic) {
     MR::make_analytic_mesh(mesh, c.surface);
-    context.exact = MR::analytic_distance<Point>(c.surface);
+    context = MR::bench_surface(mesh, c.name, MR::analytic_distance<Point>(c.surface));
   } else {
     MR::Soup_repair_report soup;
     load_mesh(c.path, mesh, soup);
+    context = MR::bench_surface(mesh, c.name);
   }
-  context.name = c.name;
-  context.analytic = c.analytic;
-  context.diagonal = bbox_diagonal(mesh);
-  context.input_border_cycles = count_border_cycles(mesh);
   return mesh;
 }
+
+// The tool's side of `run_hole_benchmark`: the lines of results.jsonl, the rows of the tables,
+// the warnings of holes that did not fit, the pictures of each punched mesh, the progress bar.
+class Bench_collector : public MR::Hole_bench_default_observer {
+ public:
+  Bench_collector(const Options& options, Progress_bar& bar)
+      : options_(options),
+        bar_(bar),
+        total_(options.cases.size() * options.bench.radii.size() * options.bench.seeds.size() *
+               options.bench.methods.size()) {}
+
+  void start_case(const Case_context& context) { context_ = &context; }
+
+  void punched(const Mesh& holed, const MR::Punch_result<Mesh, Point>& punched, double radius,
+               unsigned int seed) {
+    if (!punched.shortfall.empty()) {
+      warnings.push_back(context_->name + ", radius " + format(radius) + ", seed " +
+                         std::to_string(seed) + ": " + punched.shortfall);
+      std::cerr << "\nmesh_repair bench: " << warnings.back() << '\n';
+    }
+    if (options_.pictures)
+      pictures_ = std::make_unique<Hole_pictures>(holed, punched.holes, *context_, radius, seed);
+  }
+
+  bool filled(const MR::Hole_bench_fill<Mesh>& run, const MR::Bench_method& method) {
+    for (const MR::Hole_bench_row& row : run.rows) {
+      MR::Json_writer json(jsonl, false);
+      MR::write_json(json, row);  // one line
+      rows.push_back(table_row(row));
+    }
+    if (pictures_)
+      pictures_->add_method(run.mesh, run.patches, method, &rows[rows.size() - run.rows.size()]);
+    return bar_.progress(double(++done_) / double(total_));
+  }
+
+  void punched_done() {
+    if (pictures_) pictures_->write(options_.out, jobs, entries);
+    pictures_.reset();
+  }
+
+  std::ostringstream jsonl;
+  std::vector<Row> rows;
+  std::vector<std::string> warnings;
+  std::vector<std::pair<std::string, std::string>> jobs;  // scene file, picture
+  std::vector<Picture_entry> entries;
+
+ private:
+  const Options& options_;
+  Progress_bar& bar_;
+  std::size_t total_, done_ = 0;
+  const Case_context* context_ = nullptr;
+  std::unique_ptr<Hole_pictures> pictures_;
+};
 
 double median(std::vector<double> values) {
   if (values.empty()) return std::numeric_limits<double>::quiet_NaN();
@@ -854,51 +769,25 @@ int run_bench(const std::vector<std::string>& args) {
   std::filesystem::create_directories(options.out, error);
   if (error) throw Input_error(options.out + ": cannot be created: " + error.message());
   Progress_bar bar(options.progress);
-  const std::size_t total =
-      options.cases.size() * options.radii.size() * options.seeds.size() * options.methods.size();
-  std::size_t done = 0;
-  std::ostringstream jsonl;
-  std::vector<Row> rows;
-  std::vector<std::string> warnings;
-  std::vector<std::pair<std::string, std::string>> jobs;  // scene file, picture
-  std::vector<Picture_entry> entries;
   if (options.pictures) std::filesystem::create_directories(options.out + "/pictures", error);
   if (error) throw Input_error(options.out + "/pictures: cannot be created: " + error.message());
+  Bench_collector collector(options, bar);
   bar.start_step("bench holes");
   for (const Bench_case& c : options.cases) {
     Case_context context;
     const Mesh base = load_case(c, context);
-    for (double radius : options.radii) {
-      for (unsigned int seed : options.seeds) {
-        Mesh holed = base;
-        const auto punched = MR::punch_holes(holed, MR::parameters::number_of_holes(options.holes)
-                                                        .hole_radius(radius)
-                                                        .hole_shape(options.shape)
-                                                        .random_seed(seed));
-        if (!punched.shortfall.empty()) {
-          warnings.push_back(c.name + ", radius " + format(radius) + ", seed " +
-                             std::to_string(seed) + ": " + punched.shortfall);
-          std::cerr << "\nmesh_repair bench: " << warnings.back() << '\n';
-        }
-        std::unique_ptr<Hole_pictures> pictures;
-        if (options.pictures)
-          pictures = std::make_unique<Hole_pictures>(holed, punched.holes, context, radius, seed);
-        for (const Method& method : options.methods) {
-          run_method(holed, punched.holes, context, options, radius, seed, method, jsonl, rows,
-                     pictures.get());
-          if (!bar.progress(double(++done) / double(total))) return exit_incomplete;
-        }
-        if (pictures) pictures->write(options.out, jobs, entries);
-      }
-    }
+    collector.start_case(context);
+    if (!MR::run_hole_benchmark(base, context, options.bench, collector)) return exit_incomplete;
   }
   bar.end_step("bench holes");
-  save_text(options.out + "/results.jsonl", jsonl.str());
-  save_text(options.out + "/table.md", table_markdown(rows, quoted_command(args), warnings));
-  if (options.plots || options.pictures) draw(options, jobs);
+  const std::vector<Row>& rows = collector.rows;
+  save_text(options.out + "/results.jsonl", collector.jsonl.str());
+  save_text(options.out + "/table.md",
+            table_markdown(rows, quoted_command(args), collector.warnings));
+  if (options.plots || options.pictures) draw(options, collector.jobs);
   if (options.pictures)
     save_text(options.out + "/index.html",
-              pictures_page(entries, rows, quoted_command(args), options.out));
+              pictures_page(collector.entries, rows, quoted_command(args), options.out));
   std::cout << rows.size() << " results in " << options.out << "/results.jsonl, table in "
             << options.out << "/table.md"
             << (options.pictures ? ", pictures in " + options.out + "/index.html" : "") << '\n';

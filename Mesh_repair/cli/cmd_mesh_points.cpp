@@ -9,8 +9,6 @@
 #include <CGAL/Mesh_repair/json_writer.h>
 #include <CGAL/Mesh_repair/mesh_points.h>
 
-#include <CGAL/IO/read_points.h>
-
 #include <iostream>
 #include <sstream>
 
@@ -38,10 +36,9 @@ int run_mesh_points(const std::vector<std::string>& args) {
   if (iterations < 0 || threads < 0) throw Input_error("mesh-points: bad --iterations/--threads");
 
   std::vector<Point> points;
-  if (!CGAL::IO::read_points(input, std::back_inserter(points)) || points.size() < 3)
-    throw Input_error("mesh-points: cannot read at least three points from " + input);
+  const std::string error = MR::read_point_file(input, points);
+  if (!error.empty()) throw Input_error("mesh-points: " + error);
 
-  const auto start = std::chrono::steady_clock::now();
   Mesh mesh;
   Progress_bar bar(progress_wanted(arguments));
   const MR::Mesh_points_result meshed = MR::mesh_points(
@@ -54,34 +51,19 @@ int run_mesh_points(const std::vector<std::string>& args) {
           .visitor(std::ref(bar)));
   if (meshed.reconstructed_faces == 0)
     throw Input_error("mesh-points: the reconstruction produced no triangle");
-  const double reconstruction_seconds = meshed.reconstruction_seconds;
-  const MR::Edge_flip_result& flips = meshed.flips;
-  const MR::Quad_conversion_result& conversion = meshed.quads;
   const MR::Mga_smooth_result& smoothing = meshed.smoothing;
-  const double seconds = seconds_since(start);
   save_mesh(output, mesh);
 
   std::cout << input << ": " << points.size() << " points -> " << mesh.number_of_vertices()
-            << " vertices, " << mesh.number_of_faces() << " faces (" << conversion.quads
-            << " quads); " << flips.flips << " flips; quality mean "
+            << " vertices, " << mesh.number_of_faces() << " faces (" << meshed.quads.quads
+            << " quads); " << meshed.flips.flips << " flips; quality mean "
             << smoothing.mean_quality_before << " -> " << smoothing.mean_quality_after << ", worst "
             << smoothing.worst_quality_before << " -> " << smoothing.worst_quality_after << "; "
-            << seconds << " s\n";
+            << meshed.seconds << " s\n";
   if (arguments.has("--report")) {
     std::ostringstream text;
     MR::Json_writer json(text);
-    json.begin_object();
-    json.field("input", input).field("output", output).field("points", points.size());
-    json.field("vertices", mesh.number_of_vertices()).field("faces", mesh.number_of_faces());
-    json.field("reconstruction_seconds", reconstruction_seconds).field("seconds", seconds);
-    json.field("edge_flips", flips.flips).field("quads", conversion.quads);
-    json.field("remaining_triangles", conversion.remaining_triangles);
-    json.field("worst_quality_before", smoothing.worst_quality_before);
-    json.field("mean_quality_before", smoothing.mean_quality_before);
-    json.field("worst_quality_after", smoothing.worst_quality_after);
-    json.field("mean_quality_after", smoothing.mean_quality_after);
-    json.field("sweeps", smoothing.sweeps).field("moves", smoothing.moves);
-    json.end_object();
+    MR::write_report(json, input, output, meshed);
     save_text(arguments.get("--report"), text.str());
   }
   return smoothing.cancelled ? exit_incomplete : exit_success;

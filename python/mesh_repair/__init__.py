@@ -36,9 +36,15 @@ __all__ = [
     "remove_slivers",
     "optimize",
     "suppress_feature",
+    "smooth",
+    "mesh_points",
+    "bench_holes",
     "faces_in_sphere",
     "faces_in_box",
     "FILL_METHODS",
+    "SMOOTHING_METHODS",
+    "BENCH_METHODS",
+    "HOLE_SHAPES",
 ]
 
 #: ``(vertices, faces, report)``: what every operator that makes a mesh returns. ``faces`` is an
@@ -54,6 +60,30 @@ FILL_METHODS = (
     "curvature_variation",
     "liepa",
 )
+
+#: The smoothers of ``smooth`` (doc/mga_smooth.md): the micro-GA, the conjugate-gradient
+#: baseline, CGAL's angle_and_area_smoothing + tangential_relaxation.
+SMOOTHING_METHODS = ("mga", "cg", "cgal")
+
+#: The methods of ``bench_holes`` (doc/bench_holes.md); ``"all"`` is every one but ``liepa``
+#: (the alias of ``liepa_c1``).
+BENCH_METHODS = (
+    "advancing_front",
+    "liepa",
+    "liepa_c0",
+    "liepa_c1",
+    "liepa_c2",
+    "shape_prediction",
+    "curvature_variation",
+    "self_validated",
+    "auto",
+)
+
+#: The hole shapes of ``bench_holes``.
+HOLE_SHAPES = ("disc", "jagged", "elongated", "ring")
+
+_INT_MAX = 2**31 - 1
+_SEED_MAX = 2**32 - 1
 
 
 # ---- argument checks (the CLI's messages, with Python's parameter names) ----------------------
@@ -105,6 +135,48 @@ def _sheet_ratio(sheet_border_ratio, fill_sheet_borders):
     if not ratio > 0:
         raise ValueError("sheet_border_ratio must be positive")
     return ratio
+
+
+def _points_source(points):
+    """A path, or the (n, 3) points the compiled module checks and copies."""
+    if isinstance(points, (str, bytes, _os.PathLike)):
+        path = _os.fsdecode(points)
+        if not path:
+            raise ValueError("the path is empty")
+        return path
+    return points
+
+
+def _list(name, value, check):
+    """One value or a non-empty sequence of them, each passed through ``check``."""
+    values = [value]
+    if not isinstance(value, (_numbers.Number, str, bytes)):
+        try:
+            values = list(value)
+        except TypeError:
+            pass
+    if not values:
+        raise ValueError(f"{name} needs at least one value")
+    return [check(v) for v in values]
+
+
+def _bench_methods(methods):
+    names = methods.split(",") if isinstance(methods, str) else _list("methods", methods, str)
+    names = [n for n in names if n]
+    for name in names:
+        if name != "all" and name not in BENCH_METHODS:
+            raise ValueError(f"unknown method {name!r}; methods are {', '.join(BENCH_METHODS)} "
+                             "or all")
+    if not names:
+        raise ValueError("methods needs at least one method")
+    return names
+
+
+def _radius(value):
+    radius = _number("radius", value)
+    if not 0 < radius < 0.5:
+        raise ValueError(f"radius must be in (0, 0.5), got {value!r}")
+    return radius
 
 
 def _progress(progress):
@@ -271,6 +343,82 @@ def suppress_feature(vertices, faces=None, *, faces_to_remove, method="shape_pre
         "seed": _number("seed", seed, 0, 2**32 - 1, integer=True),
     }
     return _result(_core.suppress_feature(_source(vertices, faces), options, _progress(progress)))
+
+
+def smooth(vertices, faces=None, *, method="mga", quads=False, iterations=None, seed=0, threads=1,
+           generations=3, feature_angle=120.0, tangent_scale=0.45, slide_feature_nodes=False,
+           progress=None):
+    """Node smoothing (``mesh_repair smooth``): ``method`` "mga" (micro-GA on a G1 surface
+    rebuilt from the mesh, Chen et al.), "cg" (the paper's conjugate-gradient baseline) or
+    "cgal" (CGAL's angle_and_area_smoothing then tangential_relaxation, triangles only).
+    ``quads=True`` converts to quads first (the faces are then a list of polygons when
+    triangles remain). ``iterations``: sweeps (default 3, 1 for cgal); ``generations``: micro-GA
+    generations (CG iterations) per node and sweep; edges sharper than ``feature_angle``
+    degrees hold their nodes fixed (``slide_feature_nodes=True``: they slide along the line);
+    ``tangent_scale`` in [0, 1] scales the G1 surface's tangents (0 = the input triangles).
+    Returns a ``Result``; the report holds ``quality_before``, ``quality_after`` (worst and mean
+    alpha, beta for quads), ``max_distance_to_input`` and the smoothing counts."""
+    if method not in SMOOTHING_METHODS:
+        raise ValueError(f"method must be mga, cg or cgal, got {method!r}")
+    if quads and method == "cgal":
+        raise ValueError("CGAL's smoothing works on triangles only; drop quads")
+    options = {
+        "method": method,
+        "quads": bool(quads),
+        "seed": _number("seed", seed, 0, _SEED_MAX, integer=True),
+        "threads": _number("threads", threads, 1, 1024, integer=True),
+        "generations": _number("generations", generations, 1, _INT_MAX, integer=True),
+        "feature_angle": _number("feature_angle", feature_angle, 0, 180),
+        "tangent_scale": _number("tangent_scale", tangent_scale, 0, 1),
+        "slide_feature_nodes": bool(slide_feature_nodes),
+    }
+    if iterations is not None:
+        options["iterations"] = _number("iterations", iterations, 0, _INT_MAX, integer=True)
+    return _result(_core.smooth(_source(vertices, faces), options, _progress(progress)))
+
+
+def mesh_points(points, *, quads=False, smooth=True, iterations=3, seed=0, threads=0,
+                feature_angle=120.0, progress=None):
+    """Meshes a point cloud (``mesh_repair mesh-points``): CGAL's advancing-front surface
+    reconstruction, quality edge flips, optional conversion to quads (``quads``), then
+    ``iterations`` micro-GA sweeps on the G1 surface through the points (``smooth=False``: none).
+    ``points``: a float array of shape (n, 3), n >= 3, or the path of a point file (XYZ, PLY,
+    OFF: its vertices). ``threads`` 0 = all cores. Returns a ``Result``; the report holds
+    ``points``, ``edge_flips``, ``quads`` and the quality before and after the smoothing."""
+    options = {
+        "quads": bool(quads),
+        "smooth": bool(smooth),
+        "iterations": _number("iterations", iterations, 0, _INT_MAX, integer=True),
+        "seed": _number("seed", seed, 0, _SEED_MAX, integer=True),
+        "threads": _number("threads", threads, 0, 1024, integer=True),
+        "feature_angle": _number("feature_angle", feature_angle, 0, 180),
+    }
+    return _result(_core.mesh_points(_points_source(points), options, _progress(progress)))
+
+
+def bench_holes(vertices, faces=None, *, holes=1, radius=0.05, seeds=1, methods="liepa",
+                shape="disc", progress=None):
+    """The hole-filling benchmark (``mesh_repair bench holes``) on one closed mesh: for each
+    ``radius`` (fraction of the bounding-box diagonal, in (0, 0.5); one or a list) and each of
+    ``seeds`` (one or a list), punches ``holes`` holes of ``shape`` (one of ``HOLE_SHAPES``),
+    fills them with each of ``methods`` (names of ``BENCH_METHODS``, a list or a comma-separated
+    string, ``"all"``) and measures every fill against the removed faces. The mesh must be
+    closed (``ValueError`` otherwise); it is not modified. Returns the report dict (no mesh):
+    ``input``, ``methods``, ``results`` (one dict per hole x method x radius x seed, the keys of
+    a line of the tool's ``results.jsonl``: E1/E2/Einf, Hausdorff, normal deviation, quality,
+    closedness, time...) and ``shortfalls`` (radius and seed where fewer holes fit, and why)."""
+    if shape not in HOLE_SHAPES:
+        raise ValueError(f"shape expects disc, jagged, elongated or ring, got {shape!r}")
+    options = {
+        "holes": _number("holes", holes, 1, _INT_MAX, integer=True),
+        "radius": _list("radius", radius, _radius),
+        "seeds": _list("seeds", seeds,
+                       lambda s: _number("seeds", s, 0, _SEED_MAX, integer=True)),
+        "methods": _bench_methods(methods),
+        "shape": shape,
+    }
+    return _result(_core.bench_holes(_source(vertices, faces), options,
+                                     _progress(progress))).report
 
 
 def _centroids(vertices, faces):

@@ -134,6 +134,29 @@ struct Optimize_options {
   unsigned seed = 0;
 };
 
+struct Smooth_options {
+  std::string method = "mga";
+  bool quads = false;
+  int iterations = -1;  ///< negative: the method's default
+  unsigned seed = 0;
+  int threads = 1, generations = 3;
+  double feature_angle = 120, tangent_scale = 0.45;
+  bool slide_feature_nodes = false;
+};
+struct Mesh_points_options {
+  bool quads = false, smooth = true;
+  int iterations = 3, threads = 0;
+  unsigned seed = 0;
+  double feature_angle = 120;
+};
+struct Bench_options {
+  long long holes = 1;
+  std::vector<double> radius{0.05};
+  std::vector<unsigned> seeds{1};
+  std::vector<std::string> methods{"liepa"};
+  std::string shape = "disc";
+};
+
 /// Reads, validates, repairs and orients the input (a file through `read_mesh`, arrays through
 /// the same soup stage, consuming `input.soup`), as every CLI command does. Throws Input_error.
 void load_mesh(Mesh_input& input, Mesh& mesh, CGAL::Mesh_repair::Soup_repair_report& soup);
@@ -153,6 +176,13 @@ Operator_output optimize(Mesh_input& input, const Optimize_options& options,
                          Python_visitor& visitor);
 Operator_output suppress_feature(Mesh_input& input, const Suppress_options& options,
                                  Python_visitor& visitor);
+Operator_output smooth(Mesh_input& input, const Smooth_options& options, Python_visitor& visitor);
+/// `input`: a point file, or the points in `input.soup.points` (no faces).
+Operator_output mesh_points(Mesh_input& input, const Mesh_points_options& options,
+                            Python_visitor& visitor);
+/// No mesh out: the report holds one result per hole x method x radius x seed.
+Operator_output bench_holes(Mesh_input& input, const Bench_options& options,
+                            Python_visitor& visitor);
 
 }  // namespace mesh_repair_python
 

@@ -108,13 +108,15 @@ py::array as_array(const py::object& object, const char* what) {
   }
 }
 
-py::array_t<double, py::array::c_style> vertex_array(const py::object& object) {
-  const py::array a = as_array(object, "vertices");
+// `what`: "vertices", or "points" for a point set.
+py::array_t<double, py::array::c_style> vertex_array(const py::object& object,
+                                                     const std::string& what = "vertices") {
+  const py::array a = as_array(object, what.c_str());
   const char kind = dtype_kind(a);
   if (kind != 'f' && kind != 'i' && kind != 'u')
-    throw Input_error("vertices must hold real numbers (float64), got dtype " + dtype_text(a));
+    throw Input_error(what + " must hold real numbers (float64), got dtype " + dtype_text(a));
   if (a.ndim() != 2 || a.shape(1) != 3)
-    throw Input_error("vertices must be an array of shape (n, 3), got shape " + shape_text(a));
+    throw Input_error(what + " must be an array of shape (n, 3), got shape " + shape_text(a));
   return py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
 }
 
@@ -181,13 +183,16 @@ struct Source {
   bool face_array_given = false;
 };
 
+bool read_path(const py::object& source, Source& s) {
+  if (!py::isinstance<py::str>(source)) return false;
+  s.input.path = source.cast<std::string>();
+  if (s.input.path.empty()) throw Input_error("the path is empty");
+  return true;
+}
+
 Source read_source(const py::object& source) {
   Source s;
-  if (py::isinstance<py::str>(source)) {
-    s.input.path = source.cast<std::string>();
-    if (s.input.path.empty()) throw Input_error("the path is empty");
-    return s;
-  }
+  if (read_path(source, s)) return s;
   const py::tuple pair = source.cast<py::tuple>();
   s.vertices = vertex_array(pair[0]);
   const py::object faces = pair[1];
@@ -199,6 +204,13 @@ Source read_source(const py::object& source) {
   } else {
     throw Input_error("faces must be an integer array of shape (m, 3) or a list of polygons");
   }
+  return s;
+}
+
+// A point set: a path, or an (n, 3) array (copied by `copy_arrays`, without faces).
+Source read_points_source(const py::object& source) {
+  Source s;
+  if (!read_path(source, s)) s.vertices = vertex_array(source, "points");
   return s;
 }
 
@@ -270,11 +282,10 @@ class Options {
   std::size_t used_ = 0;
 };
 
-// Runs `work` on the caller's mesh without the GIL; turns a cancellation into the Python error
-// the visitor kept (KeyboardInterrupt for Ctrl-C), after which nothing is returned.
+// Runs `work` on the caller's mesh (or points) without the GIL; turns a cancellation into the
+// Python error the visitor kept (KeyboardInterrupt for Ctrl-C), after which nothing is returned.
 template <class Work>
-py::tuple run(const py::object& source, const py::object& progress, Work work) {
-  Source s = read_source(source);
+py::tuple run_source(Source s, const py::object& progress, Work work) {
   Python_visitor visitor;
   if (!progress.is_none()) visitor.callback = progress.ptr();
   Operator_output out;
@@ -291,6 +302,11 @@ py::tuple run(const py::object& source, const py::object& progress, Work work) {
     throw error;
   }
   return result_tuple(out);
+}
+
+template <class Work>
+py::tuple run(const py::object& source, const py::object& progress, Work work) {
+  return run_source(read_source(source), progress, work);
 }
 
 }  // namespace
@@ -411,4 +427,47 @@ PYBIND11_MODULE(_core, m) {
           return run(source, progress,
                      [&](Mesh_input& in, Python_visitor& v) { return suppress_feature(in, o, v); });
         });
+  m.def("smooth", [](const py::object& source, const py::dict& d, const py::object& progress) {
+    Smooth_options o;
+    Options(d)
+        .get("method", o.method)
+        .get("quads", o.quads)
+        .get("iterations", o.iterations)
+        .get("seed", o.seed)
+        .get("threads", o.threads)
+        .get("generations", o.generations)
+        .get("feature_angle", o.feature_angle)
+        .get("tangent_scale", o.tangent_scale)
+        .get("slide_feature_nodes", o.slide_feature_nodes)
+        .finish();
+    return run(source, progress,
+               [&](Mesh_input& in, Python_visitor& v) { return smooth(in, o, v); });
+  });
+  m.def("mesh_points", [](const py::object& source, const py::dict& d, const py::object& progress) {
+    Mesh_points_options o;
+    Options(d)
+        .get("quads", o.quads)
+        .get("smooth", o.smooth)
+        .get("iterations", o.iterations)
+        .get("seed", o.seed)
+        .get("threads", o.threads)
+        .get("feature_angle", o.feature_angle)
+        .finish();
+    Source s = read_points_source(source);
+    s.input.name = "input points";
+    return run_source(std::move(s), progress,
+                      [&](Mesh_input& in, Python_visitor& v) { return mesh_points(in, o, v); });
+  });
+  m.def("bench_holes", [](const py::object& source, const py::dict& d, const py::object& progress) {
+    Bench_options o;
+    Options(d)
+        .get("holes", o.holes)
+        .get("radius", o.radius)
+        .get("seeds", o.seeds)
+        .get("methods", o.methods)
+        .get("shape", o.shape)
+        .finish();
+    return run(source, progress,
+               [&](Mesh_input& in, Python_visitor& v) { return bench_holes(in, o, v); });
+  });
 }

@@ -8,14 +8,17 @@
 #include "binding.h"
 
 #include <CGAL/Mesh_repair/automatic_repair.h>
+#include <CGAL/Mesh_repair/bench_holes.h>
 #include <CGAL/Mesh_repair/detect_defects.h>
 #include <CGAL/Mesh_repair/fill_holes.h>
 #include <CGAL/Mesh_repair/internal/soup_validation.h>
 #include <CGAL/Mesh_repair/io.h>
 #include <CGAL/Mesh_repair/json_writer.h>
+#include <CGAL/Mesh_repair/mesh_points.h>
 #include <CGAL/Mesh_repair/optimize_mesh.h>
 #include <CGAL/Mesh_repair/quality.h>
 #include <CGAL/Mesh_repair/remove_slivers.h>
+#include <CGAL/Mesh_repair/smooth_mesh.h>
 #include <CGAL/Mesh_repair/stitch_gaps.h>
 #include <CGAL/Mesh_repair/suppress_feature.h>
 
@@ -26,6 +29,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <functional>
 #include <sstream>
 
@@ -89,6 +93,65 @@ Operator_output finish(Mesh& mesh, std::ostringstream& text) {
   out.mesh = mesh_arrays(mesh);
   out.report = text.str();
   return out;
+}
+
+// The points of `mesh_points`: a point file read as the CLI reads it, or the caller's points,
+// checked as a file's are.
+std::vector<Point> load_points(Mesh_input& input) {
+  std::vector<Point> points;
+  std::string error;
+  if (!input.path.empty()) {
+    error = MR::read_point_file(input.path, points);
+  } else {
+    points = std::move(input.soup.points);
+    error = points.size() < 3 ? input.name + ": fewer than three points"
+                              : MR::internal::validate_points(input.name, points);
+  }
+  if (!error.empty()) throw Input_error(error);
+  return points;
+}
+
+// The Python side of `run_hole_benchmark`: each row into the report's `results` array, the
+// holes that did not fit into `shortfalls`, and the visitor's progress after each method (where
+// a pending Ctrl-C stops the benchmark).
+class Bench_collector : public MR::Hole_bench_default_observer {
+ public:
+  Bench_collector(MR::Json_writer& json, Python_visitor& visitor, std::size_t total)
+      : json_(json), visitor_(visitor), total_(total) {}
+
+  template <class Punch_result>
+  void punched(const Mesh&, const Punch_result& punched, double radius, unsigned seed) {
+    if (!punched.shortfall.empty()) shortfalls.push_back({radius, seed, punched.shortfall});
+  }
+
+  bool filled(const MR::Hole_bench_fill<Mesh>& run, const MR::Bench_method&) {
+    for (const MR::Hole_bench_row& row : run.rows) MR::write_json(json_, row);
+    return visitor_.progress(double(++done_) / double(total_));
+  }
+
+  struct Shortfall {
+    double radius;
+    unsigned seed;
+    std::string reason;
+  };
+  std::vector<Shortfall> shortfalls;
+
+ private:
+  MR::Json_writer& json_;
+  Python_visitor& visitor_;
+  std::size_t total_, done_ = 0;
+};
+
+MR::Hole_bench_options bench_options(const Bench_options& options) {
+  MR::Hole_bench_options bench;
+  const std::string error = MR::bench_methods_from_names(options.methods, bench.methods);
+  if (!error.empty()) throw Input_error("methods: " + error);
+  if (!MR::hole_shape_from_string(options.shape, bench.shape))
+    throw Input_error("shape expects disc, jagged, elongated or ring, got '" + options.shape + "'");
+  bench.holes = std::size_t(options.holes);
+  bench.radii = options.radius;
+  bench.seeds = options.seeds;
+  return bench;
 }
 
 }  // namespace
@@ -418,6 +481,86 @@ Operator_output suppress_feature(Mesh_input& input, const Suppress_options& opti
   }
   json.end_array().field("implant_patches_written", 0).end_object();
   return finish(mesh, text);
+}
+
+Operator_output smooth(Mesh_input& input, const Smooth_options& options, Python_visitor& visitor) {
+  MR::Smooth_mesh_options o;
+  if (!MR::smoothing_method_from_string(options.method, o.method))
+    throw Input_error("method must be mga, cg or cgal, got '" + options.method + "'");
+  o.quads = options.quads;
+  o.iterations = options.iterations;
+  o.seed = options.seed;
+  o.threads = options.threads;
+  o.generations = options.generations;
+  o.feature_angle_deg = options.feature_angle;
+  o.tangent_scale = options.tangent_scale;
+  o.slide_feature_nodes = options.slide_feature_nodes;
+  Mesh mesh;
+  MR::Soup_repair_report soup;
+  load_mesh(input, mesh, soup);
+  const MR::Smooth_mesh_result result = MR::smooth_mesh(mesh, o, MR::Any_visitor(visitor));
+  throw_if_cancelled(visitor);
+  std::ostringstream text;
+  MR::Json_writer json(text, false);
+  MR::write_report(json, input_name(input), "", result);
+  return finish(mesh, text);
+}
+
+Operator_output mesh_points(Mesh_input& input, const Mesh_points_options& options,
+                            Python_visitor& visitor) {
+  const std::vector<Point> points = load_points(input);
+  Mesh mesh;
+  const MR::Mesh_points_result result =
+      MR::mesh_points(points, mesh,
+                      MR::parameters::feature_angle_deg(options.feature_angle)
+                          .convert_to_quads(options.quads)
+                          .number_of_iterations(options.smooth ? unsigned(options.iterations) : 0u)
+                          .number_of_threads(options.threads)
+                          .random_seed(options.seed)
+                          .visitor(std::ref(visitor)));
+  throw_if_cancelled(visitor);
+  if (result.reconstructed_faces == 0)
+    throw Input_error(input_name(input) + ": the reconstruction produced no triangle");
+  std::ostringstream text;
+  MR::Json_writer json(text, false);
+  MR::write_report(json, input_name(input), "", result);
+  return finish(mesh, text);
+}
+
+Operator_output bench_holes(Mesh_input& input, const Bench_options& options,
+                            Python_visitor& visitor) {
+  const MR::Hole_bench_options bench = bench_options(options);
+  Mesh mesh;
+  MR::Soup_repair_report soup;
+  load_mesh(input, mesh, soup);
+  // The truth is the removed surface: an open mesh's own holes would be measured as part of it.
+  const std::size_t cycles = border_cycles(mesh);
+  if (cycles > 0)
+    throw Input_error(input_name(input) + ": the mesh is not closed (" + std::to_string(cycles) +
+                      " border cycles); bench_holes punches holes into a closed mesh");
+  const std::string name =
+      input.path.empty() ? input.name : std::filesystem::path(input.path).stem().string();
+  std::ostringstream text;
+  MR::Json_writer json(text, false);
+  json.begin_object().field("input", input_name(input));
+  json.key("methods").begin_array();
+  for (const MR::Bench_method& m : bench.methods) json.value(m.name);
+  json.end_array().key("results").begin_array();
+  Bench_collector collector(json, visitor,
+                            bench.radii.size() * bench.seeds.size() * bench.methods.size());
+  visitor.start_step("bench holes");
+  MR::run_hole_benchmark(mesh, MR::bench_surface(mesh, name), bench, collector);
+  visitor.end_step("bench holes");
+  throw_if_cancelled(visitor);
+  json.end_array().key("shortfalls").begin_array();
+  for (const auto& s : collector.shortfalls) {
+    json.begin_object().field("radius", s.radius).field("seed", s.seed);
+    json.field("reason", s.reason).end_object();
+  }
+  json.end_array().end_object();
+  Operator_output out;  // no arrays: the benchmark leaves the caller's mesh as it was
+  out.report = text.str();
+  return out;
 }
 
 }  // namespace mesh_repair_python

@@ -58,3 +58,22 @@ def holed_sphere(subdivisions=3, holes=2, radius=0.3):
     v, f = icosphere(subdivisions)
     centres = [[0, 0, 1], [0, 0, -1], [1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0]][:holes]
     return punch_holes(v, f, centres, radius)
+
+
+def jittered_sphere(subdivisions=3, amount=0.3, seed=1):
+    """The icosphere with each vertex moved along the surface by up to `amount` x the local edge
+    length, then back onto the sphere: the same closed surface with worse triangles."""
+    v, f = icosphere(subdivisions)
+    rng = np.random.default_rng(seed)
+    edge = np.linalg.norm(v[f[0, 0]] - v[f[0, 1]])
+    v = v + rng.uniform(-amount, amount, v.shape) * edge
+    return v / np.linalg.norm(v, axis=1)[:, None], f
+
+
+def sphere_points(n=2000):
+    """n points spread evenly on the unit sphere (a Fibonacci lattice)."""
+    i = np.arange(n) + 0.5
+    z = 1 - 2 * i / n
+    r = np.sqrt(1 - z * z)
+    theta = np.pi * (1 + 5 ** 0.5) * i
+    return np.c_[r * np.cos(theta), r * np.sin(theta), z]

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 import mesh_repair
-from meshes import cube, icosphere, punch_holes
+from meshes import cube, icosphere, punch_holes, sphere_points
 
 
 def message(call):
@@ -62,6 +62,77 @@ def test_file_messages_are_the_cli_ones(tmp_path):
     v, f = cube()
     assert "unknown output format" in message(lambda: mesh_repair.write(tmp_path / "a.xyz", v, f))
     assert not list(tmp_path.glob(".tmp-*"))
+
+
+def test_smooth_and_bench_holes_reject_bad_arrays_as_every_operator():
+    v, f = icosphere(1)
+    nan = v.copy()
+    nan[2, 0] = np.nan
+    for call in (mesh_repair.smooth, mesh_repair.bench_holes):
+        assert message(lambda: call(nan, f)) == \
+            "input arrays: vertex 2 has a non-finite coordinate (NaN or inf)"
+        assert "shape (n, 3), got shape (42, 2)" in message(lambda: call(v[:, :2], f))
+        assert "got dtype float64" in message(lambda: call(v, f.astype(float)))
+        assert "contains no faces" in message(lambda: call(v, f[:0]))
+        assert "contains no vertices" in message(lambda: call(v[:0], f))
+        assert "faces are missing" in message(lambda: call(v))
+        with pytest.raises(TypeError):
+            call(v, f, no_such_option=1)
+
+
+def test_smooth_options_are_checked_with_the_cli_reasons():
+    v, f = icosphere(1)
+    assert "method must be mga, cg or cgal" in message(lambda: mesh_repair.smooth(v, f, method="x"))
+    assert "triangles only" in message(lambda: mesh_repair.smooth(v, f, method="cgal", quads=True))
+    assert "threads must be in [1, 1024]" in message(lambda: mesh_repair.smooth(v, f, threads=0))
+    assert "generations must be in [1," in message(lambda: mesh_repair.smooth(v, f, generations=0))
+    assert "iterations must be in [0," in message(lambda: mesh_repair.smooth(v, f, iterations=-1))
+    assert "tangent_scale must be in [0, 1]" in message(
+        lambda: mesh_repair.smooth(v, f, tangent_scale=1.5))
+    assert "feature_angle expects a number" in message(
+        lambda: mesh_repair.smooth(v, f, feature_angle="a"))
+    assert "feature_angle must be in" in message(
+        lambda: mesh_repair.smooth(v, f, feature_angle=float("nan")))
+
+
+def test_mesh_points_rejects_bad_points(tmp_path):
+    p = sphere_points(100)
+    p[5, 1] = np.inf
+    assert message(lambda: mesh_repair.mesh_points(p)) == \
+        "input points: vertex 5 has a non-finite coordinate (NaN or inf)"
+    assert message(lambda: mesh_repair.mesh_points(p[:, :2])) == \
+        "points must be an array of shape (n, 3), got shape (100, 2)"
+    assert "points must hold real numbers" in message(lambda: mesh_repair.mesh_points(p + 0j))
+    assert "got shape (300,)" in message(lambda: mesh_repair.mesh_points(p.ravel()))
+    assert "fewer than three points" in message(lambda: mesh_repair.mesh_points(p[:2]))
+    assert "fewer than three points" in message(lambda: mesh_repair.mesh_points(np.zeros((0, 3))))
+    assert "cannot be read as an array" in message(lambda: mesh_repair.mesh_points([[1, 2], [3]]))
+    missing = tmp_path / "missing.xyz"
+    assert message(lambda: mesh_repair.mesh_points(missing)) == \
+        f"cannot read at least three points from {missing}"
+    # Points that span no surface: a one-line reason, not a crash.
+    for flat in (np.zeros((10, 3)), np.c_[np.arange(10.0), np.zeros(10), np.zeros(10)]):
+        assert "no triangle" in message(lambda: mesh_repair.mesh_points(flat))
+    assert "iterations must be in [0," in message(
+        lambda: mesh_repair.mesh_points(sphere_points(50), iterations=-1))
+    assert "threads must be in [0, 1024]" in message(
+        lambda: mesh_repair.mesh_points(sphere_points(50), threads=-1))
+    with pytest.raises(TypeError):
+        mesh_repair.mesh_points(sphere_points(50), no_smooth=True)
+
+
+def test_bench_holes_options_are_checked_with_the_cli_reasons():
+    v, f = icosphere(2)
+    bench = mesh_repair.bench_holes
+    assert "radius must be in (0, 0.5)" in message(lambda: bench(v, f, radius=0.5))
+    assert "radius must be in (0, 0.5)" in message(lambda: bench(v, f, radius=[0.1, 0]))
+    assert "radius needs at least one value" in message(lambda: bench(v, f, radius=[]))
+    assert "holes must be in [1," in message(lambda: bench(v, f, holes=0))
+    assert "seeds must be in [0," in message(lambda: bench(v, f, seeds=[1, -2]))
+    assert "unknown method 'x'" in message(lambda: bench(v, f, methods="liepa,x"))
+    assert "needs at least one method" in message(lambda: bench(v, f, methods=","))
+    assert "shape expects disc, jagged, elongated or ring" in message(
+        lambda: bench(v, f, shape="square"))
 
 
 DTYPES = [np.float64, np.float32, np.int64, np.int32, np.uint8, np.bool_, np.complex128, object]

@@ -3,7 +3,7 @@ import numpy as np
 import pytest
 
 import mesh_repair
-from meshes import cube, holed_sphere, icosphere
+from meshes import cube, holed_sphere, icosphere, jittered_sphere, sphere_points
 
 
 def border_cycles(vertices, faces):
@@ -168,6 +168,26 @@ def test_exception_in_progress_callback_cancels_and_propagates():
     np.testing.assert_array_equal(v, v_before)
 
 
+@pytest.mark.parametrize("call", [
+    lambda progress: mesh_repair.smooth(*jittered_sphere(3), progress=progress),
+    lambda progress: mesh_repair.mesh_points(sphere_points(2000), progress=progress),
+    lambda progress: mesh_repair.bench_holes(*icosphere(3), radius=[0.1, 0.2], progress=progress),
+], ids=["smooth", "mesh_points", "bench_holes"])
+def test_new_operators_report_progress_and_stop_on_a_callback_exception(call):
+    events = []
+    call(lambda step, fraction: events.append((step, fraction)))
+    assert events and all(0.0 <= x <= 1.0 for _, x in events)
+
+    class Stop(Exception):
+        pass
+
+    def stop(step, fraction):
+        raise Stop(step)
+
+    with pytest.raises(Stop):
+        call(stop)
+
+
 def test_demo_mesh_with_holes_comes_out_closed(demo_mesh):
     result = mesh_repair.repair(demo_mesh("elephant-with-holes.off"))
     assert result.report["defects_before"]["border_cycles"] > 0
@@ -185,6 +205,111 @@ def test_suppress_feature_refills_a_cap_near_the_sphere():
     assert border_cycles(result.vertices, result.faces) == 0
     top = result.vertices[result.vertices[:, 2] > 0.9]
     assert np.all(np.abs(np.linalg.norm(top, axis=1) - 1) < 0.05)
+
+
+def test_smooth_raises_the_quality_of_a_jittered_sphere_and_keeps_it_closed():
+    v, f = jittered_sphere(3)
+    v_before, f_before = v.copy(), f.copy()
+    result = mesh_repair.smooth(v, f, seed=3)
+    np.testing.assert_array_equal(v, v_before)
+    np.testing.assert_array_equal(f, f_before)
+    report = result.report
+    assert report["quality_after"]["worst"] > report["quality_before"]["worst"]
+    assert report["quality_after"]["mean"] > report["quality_before"]["mean"] + 0.02
+    assert report["smoothing"]["moves"] > 0
+    np.testing.assert_array_equal(result.faces, f)  # nodes move, the connectivity stays
+    defects = mesh_repair.check(result.vertices, result.faces)
+    assert defects["closed"] and defects["self_intersections"] == 0
+    assert defects["non_manifold_edges"] == defects["degenerate_faces"] == 0
+    # The nodes stay on the surface: within 1% of the diagonal of the input triangles.
+    assert report["max_distance_to_input_relative"] < 0.01
+    radii = np.linalg.norm(result.vertices, axis=1)
+    assert radii.min() > 0.97 and radii.max() < 1.01
+
+
+@pytest.mark.parametrize("method", mesh_repair.SMOOTHING_METHODS)
+def test_every_smoothing_method_raises_the_mean_quality(method):
+    result = mesh_repair.smooth(*jittered_sphere(2), method=method)
+    report = result.report
+    assert report["method"] == method
+    assert report["iterations"] == (1 if method == "cgal" else 3)
+    assert report["mean_quality_after"] > report["mean_quality_before"]
+    assert border_cycles(result.vertices, result.faces) == 0
+
+
+def test_smooth_with_quads_returns_quads():
+    result = mesh_repair.smooth(*jittered_sphere(2), quads=True)
+    report = result.report
+    quads = sum(len(p) == 4 for p in result.faces)
+    assert report["quality_after"]["quads"] == quads > 100
+    assert report["faces"] == len(result.faces) and report["vertices"] == len(result.vertices)
+    assert report["conversion"]["merged_pairs"] > 0
+    assert report["quality_measure"] == "beta (quads), alpha (triangles)"
+
+
+def test_mesh_points_on_a_sphere_gives_a_closed_mesh_on_the_sphere(tmp_path):
+    points = sphere_points(2000)
+    before = points.copy()
+    result = mesh_repair.mesh_points(points, seed=1)
+    np.testing.assert_array_equal(points, before)
+    report = result.report
+    assert report["points"] == 2000
+    assert report["faces"] == len(result.faces) > 3000
+    assert report["mean_quality_after"] >= report["mean_quality_before"]
+    defects = mesh_repair.check(result.vertices, result.faces, self_intersections=False)
+    assert defects["closed"] and defects["border_cycles"] == 0
+    radii = np.linalg.norm(result.vertices, axis=1)
+    assert np.all(np.abs(radii - 1) < 0.01)
+    # A point file gives the same points and as many faces. (Not the same faces in the same
+    # order: CGAL's reconstruction orders them differently from one call to the next.)
+    path = tmp_path / "sphere.xyz"
+    np.savetxt(path, points, fmt="%.17g")
+    from_file = mesh_repair.mesh_points(path, smooth=False)
+    assert from_file.report["input"] == str(path)
+    assert from_file.faces.shape == result.faces.shape
+    np.testing.assert_array_equal(from_file.vertices,
+                                  mesh_repair.mesh_points(points, smooth=False).vertices)
+
+
+def test_mesh_points_without_smoothing_keeps_the_points():
+    points = sphere_points(500)
+    result = mesh_repair.mesh_points(points, smooth=False)
+    assert result.report["sweeps"] == 0
+    assert len(result.vertices) == 500
+    np.testing.assert_allclose(np.sort(result.vertices, axis=0), np.sort(points, axis=0))
+
+
+def test_bench_holes_measures_one_entry_per_hole_and_method():
+    v, f = icosphere(4)
+    report = mesh_repair.bench_holes(v, f, holes=3, radius=0.08, seeds=[1, 2],
+                                     methods=["liepa_c1", "advancing_front"])
+    results = report["results"]
+    assert report["methods"] == ["liepa_c1", "advancing_front"]
+    assert report["shortfalls"] == []
+    assert len(results) == 3 * 2 * 2
+    assert {(r["seed"], r["method"], r["hole"]) for r in results} == {
+        (s, m, h) for s in (1, 2) for m in ("liepa_c1", "advancing_front") for h in range(3)}
+    for r in results:
+        assert r["closed"] and r["mesh_closed"] and r["mesh_valid"]
+        for key in ("e1", "e2", "einf", "einf_rel", "hausdorff", "normal_deviation_max_deg"):
+            assert r[key] is not None and np.isfinite(r[key]), (key, r)
+        # The fills stay close to the sphere they replace: within 2% of the diagonal.
+        assert r["einf_rel"] < 0.02
+        assert r["border_edges"] > 5 and r["removed_faces"] > 5
+
+
+def test_bench_holes_all_methods_and_ring_shape():
+    v, f = icosphere(4)
+    report = mesh_repair.bench_holes(v, f, holes=1, radius=0.15, methods="all", shape="ring")
+    names = [m for m in mesh_repair.BENCH_METHODS if m != "liepa"]
+    assert report["methods"] == names
+    assert [r["method"] for r in report["results"]] == names
+    assert all(r["shape"] == "ring" and r["island_cycles"] == 1 for r in report["results"])
+
+
+def test_bench_holes_rejects_an_open_mesh():
+    with pytest.raises(ValueError, match="not closed .2 border cycles."):
+        mesh_repair.bench_holes(*holed_sphere(3, holes=2))
 
 
 def cli():
@@ -207,6 +332,8 @@ def test_reports_have_the_keys_of_the_cli_reports(tmp_path):
     v, f = holed_sphere(3, holes=2)
     mesh = tmp_path / "holed.off"
     mesh_repair.write(mesh, v, f)
+    points = tmp_path / "points.xyz"
+    np.savetxt(points, sphere_points(800))
     runs = {
         "check": (["check", str(mesh), "--json"], mesh_repair.check(str(mesh))),
         "repair": (["repair", str(mesh), "-o", str(tmp_path / "o.off"), "--report"],
@@ -223,6 +350,14 @@ def test_reports_have_the_keys_of_the_cli_reports(tmp_path):
                       "1,0,0,0.35", "--report"],
                      mesh_repair.suppress_feature(str(mesh), faces_to_remove=mesh_repair
                                                   .faces_in_sphere(v, f, [1, 0, 0], 0.35)).report),
+        "smooth": (["smooth", str(mesh), "-o", str(tmp_path / "o.off"), "--report"],
+                   mesh_repair.smooth(str(mesh)).report),
+        "smooth_quads": (["smooth", str(mesh), "-o", str(tmp_path / "o.off"), "--quads",
+                          "--report"], mesh_repair.smooth(str(mesh), quads=True).report),
+        "smooth_cgal": (["smooth", str(mesh), "-o", str(tmp_path / "o.off"), "--method", "cgal",
+                         "--report"], mesh_repair.smooth(str(mesh), method="cgal").report),
+        "mesh-points": (["mesh-points", str(points), "-o", str(tmp_path / "o.off"), "--report"],
+                        mesh_repair.mesh_points(str(points)).report),
     }
     for command, (arguments, ours) in runs.items():
         report = tmp_path / f"{command}.json"
@@ -243,6 +378,22 @@ def test_reports_have_the_keys_of_the_cli_reports(tmp_path):
                 assert ours[key].keys() == value.keys(), (command, key)
             if isinstance(value, list) and value and isinstance(value[0], dict):
                 assert ours[key][0].keys() == value[0].keys(), (command, key)
+    # bench writes no report: each entry of `results` has the keys of a line of results.jsonl.
+    closed = tmp_path / "sphere.off"
+    mesh_repair.write(closed, *icosphere(3))
+    out = tmp_path / "bench"
+    subprocess.run([tool, "bench", "holes", "--mesh", str(closed), "--holes", "2", "--radius",
+                    "0.1", "--seeds", "1", "--methods", "liepa,advancing_front", "--out", str(out),
+                    "--no-plots", "--no-pictures", "--quiet"], check=True,
+                   stdout=subprocess.DEVNULL)
+    theirs = [json.loads(line) for line in (out / "results.jsonl").read_text().splitlines()]
+    ours = mesh_repair.bench_holes(str(closed), holes=2, radius=0.1, seeds=1,
+                                   methods="liepa,advancing_front")["results"]
+    assert [list(r.keys()) for r in ours] == [list(r.keys()) for r in theirs]
+    # Same holes, same fills: everything but the times agrees.
+    for a, b in zip(ours, theirs):
+        assert {k: v for k, v in a.items() if k != "seconds"} == \
+            {k: v for k, v in b.items() if k != "seconds"}
 
 
 def test_gil_is_released_while_the_library_works():

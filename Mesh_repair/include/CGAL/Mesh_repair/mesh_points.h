@@ -8,12 +8,15 @@
 /// soup repaired and oriented, edges flipped for quality, optionally triangles paired into quads,
 /// then MGA smoothing on the G1 surface through the points. See doc/mga_smooth.md.
 
+#include <CGAL/Mesh_repair/internal/soup_validation.h>
+#include <CGAL/Mesh_repair/json_writer.h>
 #include <CGAL/Mesh_repair/mga_smooth.h>
 #include <CGAL/Mesh_repair/parameters.h>
 #include <CGAL/Mesh_repair/triangles_to_quads.h>
 #include <CGAL/Mesh_repair/visitor.h>
 
 #include <CGAL/Advancing_front_surface_reconstruction.h>
+#include <CGAL/IO/read_points.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
@@ -22,6 +25,7 @@
 #include <array>
 #include <chrono>
 #include <iterator>
+#include <string>
 #include <vector>
 
 namespace CGAL {
@@ -32,9 +36,11 @@ struct Mesh_points_result {
   std::size_t points = 0;               ///< input points
   std::size_t reconstructed_faces = 0;  ///< triangles of the reconstruction
   Edge_flip_result flips;
-  Quad_conversion_result quads;  ///< empty unless `convert_to_quads`
-  Mga_smooth_result smoothing;   ///< empty when `number_of_iterations` is 0
+  Quad_conversion_result quads;         ///< empty unless `convert_to_quads`
+  Mga_smooth_result smoothing;          ///< empty when `number_of_iterations` is 0
+  std::size_t vertices = 0, faces = 0;  ///< of the mesh made
   double reconstruction_seconds = 0;
+  double seconds = 0;  ///< the whole call
   bool cancelled = false;
 };
 
@@ -49,14 +55,12 @@ struct Mesh_points_options {
   int threads = 0;
 };
 
-/// `mesh_points` on plain options, templated on the point and mesh types only (compiled once in
-/// the core for Surface_mesh).
+/// The stages of `mesh_points_with_options`, filling `result`.
 template <class Point, class PolygonMesh>
-Mesh_points_result mesh_points_with_options(std::vector<Point> soup_points, PolygonMesh& pm,
-                                            const Mesh_points_options& options,
-                                            Any_visitor visitor) {
+void mesh_points_stages(std::vector<Point> soup_points, PolygonMesh& pm,
+                        const Mesh_points_options& options, Any_visitor visitor,
+                        Mesh_points_result& result) {
   namespace PMP = CGAL::Polygon_mesh_processing;
-  Mesh_points_result result;
   result.points = soup_points.size();
   clear(pm);
   const auto start = std::chrono::steady_clock::now();
@@ -64,7 +68,7 @@ Mesh_points_result mesh_points_with_options(std::vector<Point> soup_points, Poly
   CGAL::advancing_front_surface_reconstruction(soup_points.begin(), soup_points.end(),
                                                std::back_inserter(facets));
   result.reconstructed_faces = facets.size();
-  if (facets.empty()) return result;
+  if (facets.empty()) return;
   std::vector<std::vector<std::size_t>> polygons;
   for (const auto& f : facets) polygons.push_back({f[0], f[1], f[2]});
   PMP::repair_polygon_soup(soup_points, polygons);
@@ -84,6 +88,20 @@ Mesh_points_result mesh_points_with_options(std::vector<Point> soup_points, Poly
                                           .visitor(std::ref(visitor)));
     result.cancelled = result.smoothing.cancelled;
   }
+}
+
+/// `mesh_points` on plain options, templated on the point and mesh types only (compiled once in
+/// the core for Surface_mesh).
+template <class Point, class PolygonMesh>
+Mesh_points_result mesh_points_with_options(std::vector<Point> soup_points, PolygonMesh& pm,
+                                            const Mesh_points_options& options,
+                                            Any_visitor visitor) {
+  Mesh_points_result result;
+  const auto start = std::chrono::steady_clock::now();
+  mesh_points_stages(std::move(soup_points), pm, options, visitor, result);
+  result.vertices = vertices(pm).size();  // num_vertices counts removed ones too
+  result.faces = faces(pm).size();
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
 
@@ -129,6 +147,42 @@ Mesh_points_result mesh_points(const PointRange& points, PolygonMesh& pm,
   internal::Visitor_parameter<NamedParameters> visitor(np);
   return internal::mesh_points_with_options(std::vector<Point>(points.begin(), points.end()), pm,
                                             options, visitor.get());
+}
+
+/// Reads the points of a point file (`CGAL::IO::read_points`: XYZ, OFF, PLY, LAS) into `points`
+/// and checks them as a mesh's vertices are checked (finite, at most 1e100); the one-line reason
+/// when that fails or fewer than three points were read, else an empty string.
+template <class Point>
+std::string read_point_file(const std::string& path, std::vector<Point>& points) {
+  points.clear();
+  if (!CGAL::IO::read_points(path, std::back_inserter(points)) || points.size() < 3)
+    return "cannot read at least three points from " + path;
+  return internal::validate_points(path, points);
+}
+
+/// Writes the report of `mesh_repair mesh-points --report` (doc/mga_smooth.md): `input`, `output`
+/// (null when `output` is empty: no file was written), the counts and times of `result`, and the
+/// quality before and after the smoothing.
+inline void write_report(Json_writer& json, const std::string& input, const std::string& output,
+                         const Mesh_points_result& result) {
+  json.begin_object().field("input", input);
+  if (output.empty())
+    json.key("output").raw("null");
+  else
+    json.field("output", output);
+  json.field("points", result.points);
+  json.field("vertices", result.vertices).field("faces", result.faces);
+  json.field("reconstruction_seconds", result.reconstruction_seconds);
+  json.field("seconds", result.seconds);
+  json.field("edge_flips", result.flips.flips).field("quads", result.quads.quads);
+  json.field("remaining_triangles", result.quads.remaining_triangles);
+  const Mga_smooth_result& smoothing = result.smoothing;
+  json.field("worst_quality_before", smoothing.worst_quality_before);
+  json.field("mean_quality_before", smoothing.mean_quality_before);
+  json.field("worst_quality_after", smoothing.worst_quality_after);
+  json.field("mean_quality_after", smoothing.mean_quality_after);
+  json.field("sweeps", smoothing.sweeps).field("moves", smoothing.moves);
+  json.end_object();
 }
 
 }  // namespace Mesh_repair

@@ -71,14 +71,10 @@ inline std::string precheck_mesh_file(const std::string& filename) {
 /// far below (single-precision STL cannot exceed 3.4e38).
 constexpr double max_coordinate_magnitude = 1e100;
 
-/// After reading: every coordinate finite and at most `max_coordinate_magnitude`, every index in
-/// range, at least one face.
+/// Every coordinate finite and at most `max_coordinate_magnitude` (a soup's vertices, or a point
+/// set's points); the reason when one is not.
 template <class Point>
-std::string validate_soup(const std::string& filename, const std::vector<Point>& points,
-                          const std::vector<std::vector<std::size_t>>& polygons) {
-  if (polygons.empty())
-    return filename + ": contains no faces (no face with three or more vertices)";
-  if (points.empty()) return filename + ": contains no vertices";
+std::string validate_points(const std::string& filename, const std::vector<Point>& points) {
   for (std::size_t i = 0; i < points.size(); ++i) {
     const auto& p = points[i];
     if (!std::isfinite(CGAL::to_double(p.x())) || !std::isfinite(CGAL::to_double(p.y())) ||
@@ -97,6 +93,19 @@ std::string validate_soup(const std::string& filename, const std::vector<Point>&
       return out.str();
     }
   }
+  return {};
+}
+
+/// After reading: every coordinate finite and at most `max_coordinate_magnitude`, every index in
+/// range, at least one face.
+template <class Point>
+std::string validate_soup(const std::string& filename, const std::vector<Point>& points,
+                          const std::vector<std::vector<std::size_t>>& polygons) {
+  if (polygons.empty())
+    return filename + ": contains no faces (no face with three or more vertices)";
+  if (points.empty()) return filename + ": contains no vertices";
+  const std::string error = validate_points(filename, points);
+  if (!error.empty()) return error;
   for (std::size_t f = 0; f < polygons.size(); ++f) {
     for (std::size_t index : polygons[f]) {
       if (index >= points.size()) {
