@@ -256,6 +256,7 @@ class Advancing_front {
       first_out_.reserve(guess / 2 + points_.size());
       front_.reserve(3 * guess);
       stamps_.reserve(3 * guess);
+      loop_of_.reserve(3 * guess);
     }
     for (const auto& e : input.existing_edges) edges_.insert(key(e.first, e.second));
     context_complete_ = input.context_complete;
@@ -378,6 +379,7 @@ class Advancing_front {
     const int e = int(front_.size());
     front_.push_back({from, to, none, none, true, first_out_[from]});
     stamps_.push_back(0);
+    loop_of_.push_back(0);  // set by `link`; the hole's cycle is loop 0
     edges_.insert(key(from, to));
     if (first_out_[from] == none) insert_in_grid(from);
     first_out_[from] = e;
@@ -393,9 +395,31 @@ class Advancing_front {
     if (first_out_[edge.from] == none) remove_from_grid(edge.from);
     --alive_;
   }
+  /// Makes b follow a; b joins a's loop (each rule links its new edges from a live one).
   void link(int a, int b) {
     front_[a].next = b;
     front_[b].prev = a;
+    loop_of_[b] = loop_of_[a];
+  }
+  /// After a rule split a loop in two (edges a and b now on different loops), the shorter
+  /// gets a fresh id: the walk is as long as the shorter loop, O(n log n) over a run, where
+  /// walking the front to tell two loops apart cost O(n) per merge attempt (a 984-edge hole:
+  /// a third of two minutes).
+  void relabel_shorter_loop(int a, int b) {
+    const int fresh = loop_count_++;
+    for (int x = a, y = b;;) {
+      x = front_[x].next;
+      y = front_[y].next;
+      if (x == a || y == b) {
+        const int start = x == a ? a : b;
+        int e = start;
+        do {
+          loop_of_[e] = fresh;
+          e = front_[e].next;
+        } while (e != start);
+        return;
+      }
+    }
   }
 
   Vec3 normal(std::size_t p) const {
@@ -936,17 +960,6 @@ class Advancing_front {
     return true;
   }
 
-  /// True when walking the front from edge `from` reaches edge `target` (same loop).
-  bool same_loop(int from, int target) const {
-    int e = from;
-    for (std::size_t steps = 0; steps <= alive_; ++steps) {
-      if (e == target) return true;
-      e = front_[e].next;
-      if (e == from) return false;
-    }
-    return false;
-  }
-
   /// Rule b with the new node merged into the front node q: triangles (a, v, q), (q, v, b),
   /// which split the front loop in two (or consume q's edges when q neighbours a or b).
   bool merge_fan(int in, std::size_t q) {
@@ -954,7 +967,7 @@ class Advancing_front {
     const int out = front_[in].next;
     const std::size_t a = front_[in].from, v = front_[in].to, b = front_[out].to;
     const int q_out = first_out_[q], q_in = front_[q_out].prev;
-    if (!same_loop(out, q_out)) return false;
+    if (loop_of_[out] != loop_of_[q_out]) return false;
     Fan fan{{{a, v, q}, {q, v, b}}, {}};
     if (edges_.count(key(v, q))) return false;
     const bool consumes_a = q_out == front_[in].prev;  // front edge q->a
@@ -994,6 +1007,7 @@ class Advancing_front {
     link(to_q, q_out);
     link(q_in, from_q);
     link(from_q, after);
+    relabel_shorter_loop(to_q, from_q);
     for (int e : {before, to_q, q_in, from_q}) push_corner(e);
     return true;
   }
@@ -1278,6 +1292,8 @@ class Advancing_front {
   std::unordered_map<std::uint64_t, std::vector<Cell_entry>> triangle_grid_;
   mutable std::vector<std::uint32_t> visit_stamp_;
   mutable std::uint32_t visit_ = 0;
+  std::vector<int> loop_of_;  ///< the loop of each front edge (ids from `relabel_shorter_loop`)
+  int loop_count_ = 1;
   mutable std::size_t visits_ = 0;  ///< stored triangles visited, the unit of a search's work
   std::size_t alive_ = 0, border_count_ = 0, max_triangles_ = 0;
   double mean_length_ = 1, cell_ = 1, triangle_cell_ = 1;
