@@ -7,6 +7,7 @@
 #include <CGAL/Mesh_repair/hole_benchmark.h>
 #include <CGAL/Mesh_repair/hole_filling/advancing_front.h>
 #include <CGAL/Mesh_repair/io.h>
+#include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
@@ -568,8 +569,8 @@ TEST(FillHoles, AutomaticRecordsTheFallbackWhenTheFrontFails) {
   ASSERT_EQ(result.holes.size(), 1u);
   EXPECT_EQ(result.holes[0].requested, MR::Fill_method::automatic);
   // The sheet's outline cannot be filled without covering the sheet: the front, Liepa and the
-  // last-resort membrane (Liepa C0) are all rejected and listed.
-  EXPECT_EQ(result.holes[0].fallbacks.size(), 3u);
+  // last resorts (Liepa C0, refined, triangulated only) are all rejected and listed.
+  EXPECT_EQ(result.holes[0].fallbacks.size(), 5u);
   EXPECT_FALSE(result.holes[0].filled);
   EXPECT_TRUE(CGAL::is_valid_polygon_mesh(sheet));
 }
@@ -582,12 +583,14 @@ TEST(FillHoles, DefaultIsSelfValidatedAndListsEveryRejectedCandidate) {
   ASSERT_EQ(result.holes.size(), 1u);
   EXPECT_EQ(result.holes[0].requested, MR::Fill_method::self_validated);
   // The four faired candidates in their validated order, the front (handing on, then closing
-  // its remnant), then the membrane.
+  // its remnant), then the last resorts: the membrane, refined only, triangulated only.
   const auto& fallbacks = result.holes[0].fallbacks;
-  ASSERT_EQ(fallbacks.size(), 7u);
+  ASSERT_EQ(fallbacks.size(), 9u);
   EXPECT_EQ(fallbacks[4].rfind("advancing_front (0", 0), 0u) << fallbacks[4];
   EXPECT_EQ(fallbacks[5].rfind("advancing_front (remnant closed) (", 0), 0u) << fallbacks[5];
   EXPECT_EQ(fallbacks[6].rfind("liepa (C0) (", 0), 0u) << fallbacks[6];
+  EXPECT_EQ(fallbacks[7].rfind("liepa (refined, not faired) (", 0), 0u) << fallbacks[7];
+  EXPECT_EQ(fallbacks[8].rfind("liepa (triangulated only) (", 0), 0u) << fallbacks[8];
   EXPECT_FALSE(result.holes[0].filled);
   EXPECT_TRUE(CGAL::is_valid_polygon_mesh(sheet));
 }
@@ -602,9 +605,14 @@ TEST(FillHoles, ShapePredictionFallsBackToLiepaThenTheFrontAndTimesEachAttempt) 
   const auto& fallbacks = result.holes[0].fallbacks;
   // Every method is rejected (see above), in the order of `shape_prediction_sequence`, each
   // listed with the time it took.
-  ASSERT_EQ(fallbacks.size(), 4u);
-  const char* order[] = {"shape_prediction (", "liepa (", "advancing_front (", "liepa (C0) ("};
-  for (std::size_t k = 0; k < 4; ++k) {
+  ASSERT_EQ(fallbacks.size(), 6u);
+  const char* order[] = {"shape_prediction (",
+                         "liepa (",
+                         "advancing_front (",
+                         "liepa (C0) (",
+                         "liepa (refined, not faired) (",
+                         "liepa (triangulated only) ("};
+  for (std::size_t k = 0; k < 6; ++k) {
     EXPECT_EQ(fallbacks[k].rfind(order[k], 0), 0u) << fallbacks[k];
     EXPECT_NE(fallbacks[k].find(" s): "), std::string::npos) << fallbacks[k];
   }
@@ -778,6 +786,48 @@ TEST(FillHoles, AHemisphereSizedHoleIsStillFilled) {
   const MR::Fill_result result = MR::fill_holes(mesh);
   EXPECT_EQ(result.sheet_borders, 0u);
   EXPECT_EQ(result.filled, 1u);
+  EXPECT_TRUE(closed_valid_and_clean(mesh));
+}
+
+}  // namespace
+
+namespace {
+
+// CGAL's triangulation alone, the coarsest last resort, adds no vertex: n - 2 triangles.
+TEST(FillHoles, LiepaTriangulationStageAddsOnlyTheBorderTriangles) {
+  Mesh mesh = sphere_with_hole(0.5);
+  std::vector<Mesh::Halfedge_index> borders;
+  PMP::extract_boundary_cycles(mesh, std::back_inserter(borders));
+  ASSERT_EQ(borders.size(), 1u);
+  const std::size_t n = CGAL::halfedges_around_face(borders[0], mesh).size();
+  MR::Fill_patch<Mesh> patch;
+  MR::Liepa_options options;
+  options.last_stage = MR::Liepa_stage::triangulate;
+  const MR::Hole_fill_report report = MR::internal::fill_hole_liepa(
+      mesh, get(CGAL::vertex_point, mesh), Kernel(), borders[0], patch, options);
+  EXPECT_TRUE(report.filled) << report.failure;
+  EXPECT_EQ(patch.vertices.size(), 0u);
+  EXPECT_EQ(patch.faces.size(), n - 2);
+  EXPECT_TRUE(closed_valid_and_clean(mesh));
+}
+
+// The mouth of a paraboloid bowl over a square: a saddle-shaped border of 1,004 edges, above
+// the large-hole limit. Every faired patch folds there; the coarser last resorts close it.
+TEST(FillHoles, ALargeSaddleHoleGoesToTheLastResortsAndIsClosed) {
+  Mesh mesh;
+  MR::make_height_field<Mesh, Point>(mesh, -1, 1, -1, 1, 251, 251,
+                                     [](double x, double y) { return 1.5 * (x * x + y * y); });
+  const std::size_t faces_before = mesh.number_of_faces();
+  const MR::Fill_result result = MR::fill_holes(mesh);
+  ASSERT_EQ(result.holes.size(), 1u);
+  const MR::Hole_fill_report& hole = result.holes[0];
+  EXPECT_TRUE(hole.filled) << hole.failure;
+  EXPECT_EQ(hole.used, MR::Fill_method::liepa);
+  ASSERT_FALSE(hole.notes.empty());
+  EXPECT_NE(hole.notes.front().find("a large hole (1004 border edges"), std::string::npos)
+      << hole.notes.front();
+  EXPECT_LE(hole.fallbacks.size(), 2u);  // C0, then refined: no other method was tried
+  EXPECT_GT(mesh.number_of_faces(), faces_before);
   EXPECT_TRUE(closed_valid_and_clean(mesh));
 }
 

@@ -36,6 +36,7 @@
 #endif
 
 #include <algorithm>
+#include <cmath>
 #include <chrono>
 #include <cstdio>
 #include <limits>
@@ -182,9 +183,23 @@ inline std::vector<Fill_candidate> automatic_sequence() {
 
 /// Vertex rings removed around a hole to validate the methods on (self_validation.h).
 constexpr int self_validation_rings = 2;
-/// Larger holes are not validated: four fills of the enlarged hole would cost more than the
-/// fill itself by far, and such borders are rarely holes in a smooth surface.
+/// Larger holes are not validated, and only the last resorts (Liepa C0, refined, triangulated)
+/// fill them: four fills of the enlarged hole would cost more than the fill itself, the front
+/// and the C1/C2 fairings took minutes each on 1,200- to 2,828-edge borders (and failed there),
+/// and such borders are rarely holes in a smooth surface (doc/fill_holes.md, "Large holes").
 constexpr std::size_t max_self_validation_edges = 1000;
+/// The same for holes whose patch would hold more triangles at the border's edge length: the
+/// cost of the methods grows with the patch (a 1,000-edge circle at 0.006 spacing: 180,000
+/// triangles, 190 s over the whole sequence; at 100,000 and below, under 20 s).
+constexpr std::size_t max_faired_patch_triangles = 100000;
+
+/// Triangles of a patch with the border's mean edge length over the larger of the border's
+/// flat area and a strip one edge wide along it (equilateral triangles: 0.433 l^2 each).
+inline double expected_patch_triangles(const Border_cycle_geometry& g) {
+  const double l = g.mean_edge_length;
+  if (!(l > 0)) return 0;
+  return std::max(norm(g.vector_area), g.perimeter * l) / (0.433 * l * l);
+}
 
 /// Fills the hole groups of one mesh: bridges, calls the methods, checks and rolls back.
 template <class PolygonMesh, class VertexPointMap, class GeomTraits>
@@ -256,20 +271,7 @@ class Hole_filler {
         if (report.filled) break;
         rejected(candidate.name(), report, attempt_start);
       }
-      if (!report.filled) {
-        // Last resort: a membrane (C0) patch lies in the convex hull of its border (maximum
-        // principle), so it cannot bulge into a facing patch or a nearby sheet the way the
-        // C1/C2 patches can.
-        const auto attempt_start = Clock::now();
-        report = attempt(group, Fill_method::liepa, patch,
-                         Fill_candidate{Fill_method::liepa, 0}.options(options_));
-        if (report.filled)
-          report.notes.push_back(
-              "filled by Liepa with C0 (membrane) fairing: the faired "
-              "patches of the other methods were rejected");
-        else
-          rejected("liepa (C0)", report, attempt_start);
-      }
+      if (!report.filled) report = last_resorts(group, patch, rejected);
       report.fallbacks = fallbacks;
       report.notes.insert(report.notes.begin(), notes.begin(), notes.end());
     }
@@ -277,6 +279,33 @@ class Hole_filler {
     report.border_edges = outer.edges;
     report.perimeter = outer.perimeter;
     report.seconds = std::chrono::duration<double>(Clock::now() - start_time).count();
+    return report;
+  }
+
+  /// The last resorts of a sequence, coarsest last. A membrane (C0) patch lies in the convex
+  /// hull of its border (maximum principle), so it cannot bulge into a facing patch or a nearby
+  /// sheet the way the C1/C2 patches can. When its fairing, then its refinement, folds the
+  /// patch (large or saddle-shaped borders: a 1,000-edge circle, a bowl's rim), CGAL's
+  /// triangulation of the border alone closes the hole with the border's vertices only.
+  template <class Rejected>
+  Hole_fill_report last_resorts(const Group& group, Patch& patch, Rejected& rejected) {
+    const std::pair<Liepa_stage, const char*> stages[] = {
+        {Liepa_stage::fair, "liepa (C0)"},
+        {Liepa_stage::refine, "liepa (refined, not faired)"},
+        {Liepa_stage::triangulate, "liepa (triangulated only)"}};
+    Hole_fill_report report;
+    for (const auto& [stage, name] : stages) {
+      const auto attempt_start = Clock::now();
+      Fill_options options = Fill_candidate{Fill_method::liepa, 0}.options(options_);
+      options.liepa.last_stage = stage;
+      report = attempt(group, Fill_method::liepa, patch, options);
+      if (report.filled) {
+        report.notes.push_back(std::string("filled by ") + name +
+                               ": the patches of the methods before it were rejected");
+        return report;
+      }
+      rejected(name, report, attempt_start);
+    }
     return report;
   }
 
@@ -426,11 +455,15 @@ class Hole_filler {
     if (method == Fill_method::automatic) return automatic_sequence();
     if (method == Fill_method::shape_prediction) return shape_prediction_sequence();
     std::vector<Fill_candidate> ranked = self_validation_candidates();
-    const std::size_t edges = cycle_halfedges(group.outer, pm_).size();
-    if (edges > max_self_validation_edges) {
-      notes.push_back("self-validation: not done on a hole of " + std::to_string(edges) +
-                      " border edges (more than " + std::to_string(max_self_validation_edges) +
-                      "); default order");
+    const Border_cycle_geometry g = cycle_geometry(group.outer, pm_, vpm_);
+    const double triangles = expected_patch_triangles(g);
+    if (g.edges > max_self_validation_edges || triangles > double(max_faired_patch_triangles)) {
+      notes.push_back("a large hole (" + std::to_string(g.edges) + " border edges, about " +
+                      std::to_string(std::llround(triangles)) + " patch triangles; limits " +
+                      std::to_string(max_self_validation_edges) + " and " +
+                      std::to_string(max_faired_patch_triangles) +
+                      "): only Liepa's C0 fairing and its coarser stages are tried");
+      return {};
     } else if (group.islands.empty()) {
       std::string note;
       const auto fill_one = [this](const Fill_candidate& candidate, auto& mesh, auto border,

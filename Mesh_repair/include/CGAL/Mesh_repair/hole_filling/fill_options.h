@@ -34,9 +34,17 @@ struct Advancing_front_options {
   unsigned int smoothing_iterations = 3;  ///< tangential relaxation passes of the new nodes
 };
 
+/// How far `fill_hole_liepa` goes: CGAL's triangulation of the border polygon alone
+/// (`triangulate_hole`), refined to the border's density (`triangulate_and_refine_hole`), or
+/// refined and faired (`triangulate_refine_and_fair_hole`). The coarser stages are the last
+/// resorts of the sequences: on large or saddle-shaped borders the fairing, and sometimes the
+/// refinement, folds the patch onto itself where the triangulation alone does not.
+enum class Liepa_stage { triangulate, refine, fair };
+
 /// Options of `fill_hole_liepa` (CGAL's `triangulate_refine_and_fair_hole`).
 struct Liepa_options {
   unsigned int fairing_continuity = 1;  ///< 0 (membrane), 1 (thin plate) or 2
+  Liepa_stage last_stage = Liepa_stage::fair;
 };
 
 /// Options of `fill_hole_shape_prediction` (thesis chapter 5).

@@ -15,13 +15,19 @@
 
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 
+#include <cstddef>
 #include <iterator>
 #include <string>
+#include <tuple>
 
 namespace CGAL {
 namespace Mesh_repair {
 
 namespace internal {
+
+/// Borders with more edges are triangulated in CGAL's Delaunay search space only (see
+/// `fill_hole_liepa`): its exhaustive fallback is O(n^3) in time and O(n^2) in memory.
+constexpr std::size_t max_cubic_search_edges = 1000;
 
 /// `fill_hole_liepa` on plain options; `vpm` and `traits` as read by the public function.
 template <class PolygonMesh, class VertexPointMap, class GeomTraits>
@@ -35,15 +41,35 @@ Hole_fill_report fill_hole_liepa(
     report.failure = "fairing_continuity must be 0, 1 or 2";
     return report;
   }
-  const auto result = CGAL::Polygon_mesh_processing::triangulate_refine_and_fair_hole(
-      pm, border_halfedge, std::back_inserter(patch.faces), std::back_inserter(patch.vertices),
-      CGAL::parameters::vertex_point_map(vpm).geom_traits(traits).fairing_continuity(
-          options.fairing_continuity));
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  // CGAL falls back to the O(n^3) search over every triangulation when its Delaunay search
+  // space holds none; past `max_cubic_search_edges` that search takes minutes and O(n^2)
+  // memory, so the fill fails instead and the next method takes the hole.
+  const bool bounded = halfedges_around_face(border_halfedge, pm).size() > max_cubic_search_edges;
+  const auto np = CGAL::parameters::vertex_point_map(vpm)
+                      .geom_traits(traits)
+                      .fairing_continuity(options.fairing_continuity)
+                      .do_not_use_cubic_algorithm(bounded);
+  bool faired = true;
+  if (options.last_stage == Liepa_stage::triangulate) {
+    PMP::triangulate_hole(pm, border_halfedge, std::back_inserter(patch.faces), np);
+  } else if (options.last_stage == Liepa_stage::refine) {
+    PMP::triangulate_and_refine_hole(pm, border_halfedge, std::back_inserter(patch.faces),
+                                     std::back_inserter(patch.vertices), np);
+  } else {
+    faired = std::get<0>(
+        PMP::triangulate_refine_and_fair_hole(pm, border_halfedge, std::back_inserter(patch.faces),
+                                              std::back_inserter(patch.vertices), np));
+  }
   report.faces_created = patch.faces.size();
   report.vertices_created = patch.vertices.size();
   report.filled = !patch.faces.empty();
-  if (!report.filled) report.failure = "CGAL found no triangulation of the border polygon";
-  if (report.filled && !std::get<0>(result) && !patch.vertices.empty())
+  if (!report.filled)
+    report.failure = bounded ? "CGAL found no triangulation in its Delaunay search space (the "
+                               "exhaustive search is not run on borders of more than " +
+                                   std::to_string(max_cubic_search_edges) + " edges)"
+                             : "CGAL found no triangulation of the border polygon";
+  if (report.filled && !faired && !patch.vertices.empty())
     report.notes.push_back("fairing failed (singular system); the refined patch is not faired");
   return report;
 }

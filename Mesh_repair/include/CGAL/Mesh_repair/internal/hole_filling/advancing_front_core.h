@@ -211,7 +211,10 @@ class Advancing_front {
     double angle;
     int in;
     std::uint32_t stamp;
-    bool operator>(const Corner& other) const { return angle > other.angle; }
+    // Ties broken by edge, so that the order does not depend on the heap's history.
+    bool operator>(const Corner& other) const {
+      return angle > other.angle || (angle == other.angle && in > other.in);
+    }
   };
 
  public:
@@ -283,31 +286,27 @@ class Advancing_front {
   Front_triangulation run() {
     Front_triangulation result;
     result.border_points = border_count_ = points_.size();
-    std::size_t failures = 0;
     while (alive_ > 0) {
       if (triangles_.size() > max_triangles_) {
         result.failure = "the front does not close (too many triangles)";
         break;
       }
+      // Every corner that could succeed is in the queue: a blocked one comes back only when the
+      // front changes within its reach, so an empty queue means no rule applies anywhere.
       if (queue_.empty()) {
-        if (blocked_.empty() || failures > 2 * alive_ + 8) {
-          result.failure = "the front is stuck: no valid triangle at any node";
-          break;
-        }
-        for (int e : blocked_) push_corner(e);
-        blocked_.clear();
-        continue;
+        result.failure = "the front is stuck: no valid triangle at any node";
+        break;
       }
       const Corner corner = queue_.top();
       queue_.pop();
       if (!front_[corner.in].alive || stamps_[corner.in] != corner.stamp) continue;
+      touched_.clear();
+      reach_center_ = points_[front_[corner.in].to];
+      reach_ = 0;
       if (advance(corner.in, corner.angle)) {
-        failures = 0;
-        for (int e : blocked_) push_corner(e);
-        blocked_.clear();
+        wake_blocked_corners();
       } else {
-        ++failures;
-        blocked_.push_back(corner.in);
+        blocked_.push_back({corner.in, stamps_[corner.in], reach_});
       }
     }
     result.closed = alive_ == 0;
@@ -338,6 +337,51 @@ class Advancing_front {
   }
 
  private:
+  /// After a rule changed the front, the blocked corners whose outcome may have changed go back
+  /// to the queue: those whose node or front neighbours the rule touched (their normals,
+  /// angles and edges changed), and those whose tests (front points, stored triangles) reached
+  /// the box of the touched points. The others would fail again as they did: waking every
+  /// blocked corner after each success made a stalled 1,200-edge front quadratic.
+  void wake_blocked_corners() {
+    if (touched_.empty()) return;
+    CGAL::Bbox_3 box;
+    for (std::size_t p : touched_) box += point_3(points_[p]).bbox();
+    std::sort(touched_.begin(), touched_.end());
+    const auto is_touched = [&](std::size_t p) {
+      return std::binary_search(touched_.begin(), touched_.end(), p);
+    };
+    std::size_t kept = 0;
+    for (const Blocked_corner& corner : blocked_) {
+      if (!front_[corner.in].alive || stamps_[corner.in] != corner.stamp) continue;
+      const Front_edge& in = front_[corner.in];
+      const std::size_t v = in.to;
+      const bool woken = is_touched(in.from) || is_touched(v) || is_touched(front_[in.next].to) ||
+                         distance_to_box(points_[v], box) <= corner.reach * (1 + 1e-6);
+      if (woken) {
+        push_corner(corner.in);
+      } else {
+        blocked_[kept++] = corner;
+      }
+    }
+    blocked_.resize(kept);
+  }
+  static double distance_to_box(const Vec3& p, const CGAL::Bbox_3& box) {
+    Vec3 d{0, 0, 0};
+    for (int k = 0; k < 3; ++k) d[k] = std::max({box.min(k) - p[k], p[k] - box.max(k), 0.0});
+    return norm(d);
+  }
+  /// Widens the reach of the corner under test to a query ball (center, radius).
+  void note_reach(const Vec3& center, double radius) const {
+    reach_ = std::max(reach_, norm(sub(center, reach_center_)) + radius);
+  }
+  void note_reach(const CGAL::Bbox_3& box) const {
+    Vec3 far{0, 0, 0};
+    for (int k = 0; k < 3; ++k)
+      far[k] = std::max(std::abs(box.min(k) - reach_center_[k]),
+                        std::abs(box.max(k) - reach_center_[k]));
+    reach_ = std::max(reach_, norm(far));
+  }
+
   // ---- bookkeeping --------------------------------------------------------------------------
   static std::uint64_t key(std::size_t a, std::size_t b) {
     if (a > b) std::swap(a, b);
@@ -381,6 +425,8 @@ class Advancing_front {
     stamps_.push_back(0);
     loop_of_.push_back(0);  // set by `link`; the hole's cycle is loop 0
     edges_.insert(key(from, to));
+    touched_.push_back(from);
+    touched_.push_back(to);
     if (first_out_[from] == none) insert_in_grid(from);
     first_out_[from] = e;
     ++alive_;
@@ -389,6 +435,8 @@ class Advancing_front {
   void kill(int e) {
     Front_edge& edge = front_[e];
     edge.alive = false;
+    touched_.push_back(edge.from);
+    touched_.push_back(edge.to);
     int* link = &first_out_[edge.from];
     while (*link != e) link = &front_[*link].next_out;
     *link = edge.next_out;
@@ -434,6 +482,7 @@ class Advancing_front {
   }
   void add_triangle(std::size_t a, std::size_t b, std::size_t c) {
     triangles_.push_back({a, b, c});
+    touched_.insert(touched_.end(), {a, b, c});
     triangle_stored_.push_back(store_triangle({a, b, c}, {points_[a], points_[b], points_[c]}));
     edges_.insert(key(a, b));
     edges_.insert(key(b, c));
@@ -485,6 +534,7 @@ class Advancing_front {
                                                       double radius) const {
     std::vector<std::size_t>& found = near_points_;
     found.clear();
+    note_reach(frame.origin, radius);
     const Vec3& c = frame.origin;
     const auto base = [&](double x) { return cell_index(x, cell_); };
     std::array<std::int64_t, 3> lo, hi;
@@ -687,6 +737,7 @@ class Advancing_front {
   /// (stored triangles whose stamp is already `visit_` are skipped); stops when it returns true.
   template <class Test>
   bool any_stored_near(const CGAL::Bbox_3& box, Test test) const {
+    note_reach(box);
     bool found = false;
     const auto visit = [&](std::size_t index) {
       ++visits_;
@@ -1280,7 +1331,16 @@ class Advancing_front {
   Edge_set edges_;
   std::unordered_map<std::uint64_t, std::vector<std::size_t>> grid_;
   std::priority_queue<Corner, std::vector<Corner>, std::greater<Corner>> queue_;
-  std::vector<int> blocked_;
+  /// A corner no rule applies to, and how far from its node its tests looked.
+  struct Blocked_corner {
+    int in;
+    std::uint32_t stamp;
+    double reach;
+  };
+  std::vector<Blocked_corner> blocked_;
+  std::vector<std::size_t> touched_;  ///< points whose front or triangles the last rule changed
+  mutable Vec3 reach_center_{0, 0, 0};
+  mutable double reach_ = 0;
   std::vector<std::array<std::size_t, 3>> triangles_;
   std::vector<std::size_t> triangle_stored_;  // per triangle: its index in stored_
   std::vector<Stored_triangle> stored_;
