@@ -4,14 +4,11 @@
 #include <CGAL/Mesh_repair/detect_defects.h>
 #include <CGAL/Mesh_repair/generators.h>
 #include <CGAL/Mesh_repair/io.h>
-#include <CGAL/Polygon_mesh_processing/border.h>
-#include <CGAL/Polygon_mesh_processing/connected_components.h>
-#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
-#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
 #include <gtest/gtest.h>
 
-#include "hole_punching.h"
+#include "support/cgal_calls.h"
+#include "support/hole_punching.h"
 
 #include <algorithm>
 #include <cmath>
@@ -25,7 +22,7 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
 using Mesh = CGAL::Surface_mesh<Point>;
 namespace MR = CGAL::Mesh_repair;
-namespace PMP = CGAL::Polygon_mesh_processing;
+namespace support = mesh_repair_test;
 
 using mesh_repair_test::count_border_cycles;
 using mesh_repair_test::punch_hole;
@@ -130,9 +127,7 @@ TEST(AutomaticRepair, KeepsEveryComponentUnlessAskedAndCountsRemovals) {
   MR::make_sphere(mesh, Point(5, 0, 0), 0.5, 1);
   Mesh kept = mesh;
   MR::automatic_repair(kept);
-  EXPECT_EQ(PMP::connected_components(
-                kept, kept.add_property_map<Mesh::Face_index, std::size_t>("f:cc").first),
-            2u);
+  EXPECT_EQ(support::connected_components(kept), 2u);
   const auto result = MR::automatic_repair(mesh, MR::parameters::keep_largest_component(true));
   EXPECT_EQ(result.components_removed, 1u);
   EXPECT_EQ(result.faces_removed_with_components, 80u);
@@ -217,9 +212,7 @@ TEST(AutomaticRepair, RealScanGivesTheSameMeshWithTwoThreads) {
 }
 
 std::size_t self_intersection_count(const Mesh& mesh) {
-  std::vector<std::pair<Mesh::Face_index, Mesh::Face_index>> pairs;
-  PMP::self_intersections(mesh, std::back_inserter(pairs));
-  return pairs.size();
+  return support::self_intersections(mesh).size();
 }
 
 /// A sphere where two vertices were pushed through the surface, each along a chord (the two
@@ -388,7 +381,7 @@ Mesh cubes_sharing_a_face() {
     }
   }
   Mesh mesh;
-  PMP::polygon_soup_to_polygon_mesh(points, faces, mesh);
+  support::polygon_soup_to_polygon_mesh(points, faces, mesh);
   return mesh;
 }
 
@@ -434,12 +427,12 @@ TEST(AutomaticRepair, ShellsTouchingAtACornerAreKeptSplitAndReportedNonManifold)
 TEST(FillHoles, APatchMeetingAnotherPartOfTheMeshIsRolledBack) {
   Mesh mesh = overlapping_spheres_with_facing_holes();
   ASSERT_EQ(count_border_cycles(mesh), 2u);
-  ASSERT_FALSE(PMP::does_self_intersect(mesh));
+  ASSERT_FALSE(support::does_self_intersect(mesh));
   for (auto method : {MR::Fill_method::automatic, MR::Fill_method::liepa}) {
     Mesh filled = mesh;
     const auto result = MR::fill_holes(filled, MR::parameters::fill_method(method));
     EXPECT_TRUE(CGAL::is_valid_polygon_mesh(filled));
-    EXPECT_FALSE(PMP::does_self_intersect(filled)) << MR::to_string(method);
+    EXPECT_FALSE(support::does_self_intersect(filled)) << MR::to_string(method);
     // The first hole is filled; every attempt on the second crosses the first patch.
     EXPECT_EQ(result.filled, 1u) << MR::to_string(method);
     EXPECT_EQ(result.failed, 1u) << MR::to_string(method);

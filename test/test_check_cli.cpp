@@ -1,13 +1,12 @@
 // mesh_repair check, run as a user would: exit statuses, the summary, the JSON report's
 // top-level keys, counts that include the soup stage, and real meshes against CGAL's count.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
-#include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <gtest/gtest.h>
 
 #include "scratch_folder.h"
+#include "support/cgal_calls.h"
 
 #include <cstdlib>
 #include <filesystem>
@@ -168,9 +167,9 @@ TEST_P(CheckRealMesh, BorderCyclesEqualCgalOnTheFileAsCgalReadsIt) {
   const std::string path = std::string(MESH_REPAIR_DEMO_DATA_DIR) + "/" + GetParam();
   if (!fs::exists(path)) GTEST_SKIP() << path << " absent (scripts/fetch_demo_data.sh)";
   CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3> mesh;
-  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(path, mesh));
-  std::vector<decltype(mesh)::Halfedge_index> cycles;
-  CGAL::Polygon_mesh_processing::extract_boundary_cycles(mesh, std::back_inserter(cycles));
+  ASSERT_TRUE(mesh_repair_test::read_polygon_mesh(path, mesh));
+  const std::vector<decltype(mesh)::Halfedge_index> cycles =
+      mesh_repair_test::boundary_cycles(mesh);
   const fs::path json = scratch("real.json");
   check(path + " --json " + json.string() + " --no-self-intersections --quiet");
   const std::string report = read_text(json);

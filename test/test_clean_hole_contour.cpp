@@ -2,9 +2,10 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Mesh_repair/clean_hole_contour.h>
 #include <CGAL/Mesh_repair/generators.h>
-#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Surface_mesh.h>
 #include <gtest/gtest.h>
+
+#include "support/cgal_calls.h"
 
 #include <array>
 #include <cmath>
@@ -22,7 +23,7 @@ Mesh from_soup(const std::vector<Point>& points,
   Mesh mesh;
   std::vector<std::vector<std::size_t>> polygons;
   for (const auto& f : faces) polygons.push_back({f[0], f[1], f[2]});
-  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+  mesh_repair_test::polygon_soup_to_polygon_mesh(points, polygons, mesh);
   return mesh;
 }
 

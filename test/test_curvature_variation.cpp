@@ -6,10 +6,10 @@
 #include <CGAL/Mesh_repair/internal/hole_benchmark/punch.h>
 #include <CGAL/Mesh_repair/internal/curvature_variation/multifrontal_cholesky.h>
 #include <CGAL/Mesh_repair/visitor.h>
-#include <CGAL/Polygon_mesh_processing/border.h>
-#include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 #include <CGAL/Surface_mesh.h>
 #include <gtest/gtest.h>
+
+#include "support/cgal_calls.h"
 
 #include <algorithm>
 #include <cmath>
@@ -27,9 +27,7 @@ namespace cv = CGAL::Mesh_repair::internal::curvature_variation;
 using CGAL::Mesh_repair::internal::hole_benchmark::punch_ball_hole;
 
 std::size_t border_cycles(const Mesh& mesh) {
-  std::vector<halfedge_descriptor> cycles;
-  CGAL::Polygon_mesh_processing::extract_boundary_cycles(mesh, std::back_inserter(cycles));
-  return cycles.size();
+  return mesh_repair_test::boundary_cycles(mesh).size();
 }
 
 // Largest distance of the patch vertices to the sphere of radius 1 at the origin, over the
@@ -296,9 +294,8 @@ TEST(CurvatureVariation, RemeasuredWeightsBringALargeSphereCapCloserToTheSphere)
     const halfedge_descriptor border = punch_ball_hole(mesh, Point(0, 0, 1), 0.8);
     ASSERT_EQ(border_cycles(mesh), 1u);
     std::vector<MR::Fill_patch<Mesh>> patches(1);
-    CGAL::Polygon_mesh_processing::triangulate_and_refine_hole(
-        mesh, border, std::back_inserter(patches[0].faces),
-        std::back_inserter(patches[0].vertices));
+    mesh_repair_test::triangulate_and_refine_hole(mesh, border, patches[0].faces,
+                                                  patches[0].vertices);
     ASSERT_GT(patches[0].vertices.size(), 20u);
     cv::System_options options;
     options.density = MR::Force_density::cotangent;
@@ -329,8 +326,7 @@ TEST(CurvatureVariation, InitialGridRelaxationIsTangentialAndKeepsTheContour) {
   for (auto h : CGAL::halfedges_around_face(border, mesh))
     contour.push_back(mesh.point(target(h, mesh)));
   MR::Fill_patch<Mesh> patch;
-  CGAL::Polygon_mesh_processing::triangulate_and_refine_hole(
-      mesh, border, std::back_inserter(patch.faces), std::back_inserter(patch.vertices));
+  mesh_repair_test::triangulate_and_refine_hole(mesh, border, patch.faces, patch.vertices);
   ASSERT_GT(patch.vertices.size(), 10u);
   auto smallest_angle = [&]() {
     double smallest = 180;

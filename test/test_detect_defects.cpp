@@ -5,12 +5,13 @@
 #include <CGAL/Mesh_repair/io.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <gtest/gtest.h>
+
+#include "support/cgal_calls.h"
 
 #include <filesystem>
 #include <sstream>
@@ -20,7 +21,6 @@
 namespace {
 
 namespace MR = CGAL::Mesh_repair;
-namespace PMP = CGAL::Polygon_mesh_processing;
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
 using Mesh = CGAL::Surface_mesh<Point>;
@@ -472,8 +472,7 @@ TEST_P(RealMesh, BorderCycleCountEqualsCgalExtractBoundaryCycles) {
   Mesh mesh;
   MR::Soup_repair_report soup;
   ASSERT_EQ(MR::read_mesh(path, mesh, soup), "");
-  std::vector<Mesh::Halfedge_index> cycles;
-  PMP::extract_boundary_cycles(mesh, std::back_inserter(cycles));
+  const std::vector<Mesh::Halfedge_index> cycles = mesh_repair_test::boundary_cycles(mesh);
   const auto report = MR::detect_defects(mesh, MR::parameters::detect_self_intersections(false));
   EXPECT_EQ(report.border_cycles.size(), cycles.size());
   EXPECT_GT(cycles.size(), 0u);

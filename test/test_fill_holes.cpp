@@ -7,13 +7,11 @@
 #include <CGAL/Mesh_repair/hole_benchmark.h>
 #include <CGAL/Mesh_repair/hole_filling/advancing_front.h>
 #include <CGAL/Mesh_repair/io.h>
-#include <CGAL/Polygon_mesh_processing/border.h>
-#include <CGAL/Polygon_mesh_processing/connected_components.h>
-#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
 #include <gtest/gtest.h>
 
-#include "hole_punching.h"
+#include "support/cgal_calls.h"
+#include "support/hole_punching.h"
 
 #include <cmath>
 #include <limits>
@@ -29,7 +27,7 @@ using Point = Kernel::Point_3;
 using Mesh = CGAL::Surface_mesh<Point>;
 using face_descriptor = Mesh::Face_index;
 namespace MR = CGAL::Mesh_repair;
-namespace PMP = CGAL::Polygon_mesh_processing;
+namespace support = mesh_repair_test;
 namespace fs = std::filesystem;
 using mesh_repair_test::count_border_cycles;
 using mesh_repair_test::punch_hole;
@@ -45,7 +43,7 @@ Mesh sphere_with_hole(double hole_radius, int subdivisions = 4) {
 
 bool closed_valid_and_clean(const Mesh& mesh) {
   return CGAL::is_closed(mesh) && CGAL::is_valid_polygon_mesh(mesh) &&
-         !PMP::does_self_intersect(mesh);
+         !support::does_self_intersect(mesh);
 }
 
 /// Largest distance of a vertex to the unit sphere, over the bounding-box diagonal.
@@ -60,8 +58,7 @@ double normalised_sphere_einf(const Mesh& mesh) {
 
 /// Intersecting face pairs in which a face created after the first `original_faces` takes part.
 std::size_t new_intersections(const Mesh& mesh, std::size_t original_faces) {
-  std::vector<std::pair<face_descriptor, face_descriptor>> pairs;
-  PMP::self_intersections(mesh, std::back_inserter(pairs));
+  const std::vector<support::Face_pair> pairs = support::self_intersections(mesh);
   std::size_t count = 0;
   for (const auto& pair : pairs) {
     if (std::size_t(pair.first) >= original_faces || std::size_t(pair.second) >= original_faces)
@@ -150,8 +147,7 @@ void expect_front_fills_punched_holes(const std::string& name, double radius,
       patch_faces.insert(patch_faces.end(), faces.begin(), faces.end());
     }
     EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
-    std::vector<std::pair<face_descriptor, face_descriptor>> pairs;
-    PMP::self_intersections(mesh, std::back_inserter(pairs));
+    const std::vector<support::Face_pair> pairs = support::self_intersections(mesh);
     const std::set<face_descriptor> in_patch(patch_faces.begin(), patch_faces.end());
     for (const auto& pair : pairs)
       EXPECT_FALSE(in_patch.count(pair.first) || in_patch.count(pair.second)) << name;
@@ -316,7 +312,7 @@ TEST(FillHoles, AdvancingFrontKeepsNoPatchThroughAFaceOfAnotherComponent) {
   EXPECT_FALSE(report.filled);
   EXPECT_EQ(mesh.number_of_faces(), faces_before);
   EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
-  EXPECT_FALSE(PMP::does_self_intersect(mesh));
+  EXPECT_FALSE(support::does_self_intersect(mesh));
 }
 
 TEST(FillHoles, LiepaClosesASphereHoleWithEveryContinuity) {
@@ -415,8 +411,7 @@ TEST(FillHoles, RingHoleIsClosedWithOnePatchJoiningTheIsland) {
     EXPECT_EQ(result.holes[0].island_cycles, 1u);
     EXPECT_TRUE(result.holes[0].filled) << result.holes[0].failure;
     EXPECT_TRUE(closed_valid_and_clean(filled)) << MR::to_string(method);
-    std::vector<std::size_t> component(num_faces(filled) + filled.number_of_removed_faces());
-    EXPECT_EQ(PMP::connected_components(filled, CGAL::make_property_map(component)), 1u);
+    EXPECT_EQ(support::connected_components(filled), 1u);
   }
 }
 
@@ -557,7 +552,7 @@ TEST(FillHoles, SelfIntersectingPatchIsRolledBackAndTheMeshUnchanged) {
   EXPECT_EQ(sheet.number_of_vertices(), vertices_before);
   EXPECT_EQ(count_border_cycles(sheet), 1u);
   EXPECT_TRUE(CGAL::is_valid_polygon_mesh(sheet));
-  EXPECT_FALSE(PMP::does_self_intersect(sheet));
+  EXPECT_FALSE(support::does_self_intersect(sheet));
 }
 
 TEST(FillHoles, AutomaticRecordsTheFallbackWhenTheFrontFails) {
@@ -759,7 +754,7 @@ TEST(FillHoles, TheOutlineOfAnOpenSheetIsLeftOpenAndItsHoleFilled) {
   EXPECT_EQ(sheet_reports, 1u);
   EXPECT_GT(mesh.number_of_faces(), faces_before);
   EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
-  EXPECT_FALSE(PMP::does_self_intersect(mesh));
+  EXPECT_FALSE(support::does_self_intersect(mesh));
 }
 
 TEST(FillHoles, InfiniteSheetBorderRatioHandsTheOutlineToTheMethods) {
@@ -796,8 +791,7 @@ namespace {
 // CGAL's triangulation alone, the coarsest last resort, adds no vertex: n - 2 triangles.
 TEST(FillHoles, LiepaTriangulationStageAddsOnlyTheBorderTriangles) {
   Mesh mesh = sphere_with_hole(0.5);
-  std::vector<Mesh::Halfedge_index> borders;
-  PMP::extract_boundary_cycles(mesh, std::back_inserter(borders));
+  const std::vector<Mesh::Halfedge_index> borders = support::boundary_cycles(mesh);
   ASSERT_EQ(borders.size(), 1u);
   const std::size_t n = CGAL::halfedges_around_face(borders[0], mesh).size();
   MR::Fill_patch<Mesh> patch;

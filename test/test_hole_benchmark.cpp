@@ -4,13 +4,12 @@
 #include <CGAL/Mesh_repair/hole_benchmark.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/border.h>
-#include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <gtest/gtest.h>
 
 #include "scratch_folder.h"
+#include "support/cgal_calls.h"
 
 #include <cstdio>
 #include <cstdlib>
@@ -21,15 +20,13 @@
 namespace {
 
 namespace MR = CGAL::Mesh_repair;
-namespace PMP = CGAL::Polygon_mesh_processing;
+namespace support = mesh_repair_test;
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
 using Mesh = CGAL::Surface_mesh<Point>;
 
 std::size_t border_cycles(const Mesh& mesh) {
-  std::vector<Mesh::Halfedge_index> cycles;
-  PMP::extract_boundary_cycles(mesh, std::back_inserter(cycles));
-  return cycles.size();
+  return support::boundary_cycles(mesh).size();
 }
 
 Mesh analytic(MR::Analytic_surface surface) {
@@ -144,8 +141,7 @@ TEST(HoleBenchmark, CurvatureJumpIsSmallForTheTruthAndTheSphereCurvatureForAFlat
   for (const auto& hole : punched.holes) {
     std::vector<Mesh::Face_index> faces;
     std::vector<Mesh::Vertex_index> vertices;
-    PMP::triangulate_and_refine_hole(mesh, hole.border_halfedge, std::back_inserter(faces),
-                                     std::back_inserter(vertices));
+    support::triangulate_and_refine_hole(mesh, hole.border_halfedge, faces, vertices);
     ASSERT_GT(vertices.size(), 3u);
   }
   for (const auto& hole : punched.holes) {
@@ -168,8 +164,7 @@ TEST(HoleBenchmark, ErrorNormsAreOrderedE1AtMostE2AtMostEinfAfterLiepaFill) {
   for (const auto& hole : punched.holes) {
     std::vector<Mesh::Face_index> faces;
     std::vector<Mesh::Vertex_index> vertices;
-    PMP::triangulate_refine_and_fair_hole(mesh, hole.border_halfedge, std::back_inserter(faces),
-                                          std::back_inserter(vertices));
+    support::triangulate_refine_and_fair_hole(mesh, hole.border_halfedge, faces, vertices);
     patches.push_back(faces);
   }
   EXPECT_TRUE(CGAL::is_closed(mesh));

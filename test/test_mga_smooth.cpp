@@ -5,18 +5,14 @@
 #include <CGAL/Mesh_repair/mga_smooth.h>
 #include <CGAL/Mesh_repair/triangles_to_quads.h>
 
-#include <CGAL/AABB_face_graph_triangle_primitive.h>
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
-#include <CGAL/Polygon_mesh_processing/angle_and_area_smoothing.h>
-#include <CGAL/Polygon_mesh_processing/tangential_relaxation.h>
 #include <CGAL/Random.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #include <gtest/gtest.h>
+
+#include "support/cgal_calls.h"
 
 #include <algorithm>
 #include <array>
@@ -79,23 +75,10 @@ TEST(MgaSmooth, PlaneMeshStaysInThePlaneAndImproves) {
   EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
 }
 
-// The largest distance from `mesh`'s vertices to `input`'s triangles.
-double max_distance_to(const Mesh& mesh, const Mesh& input) {
-  using Tree =
-      CGAL::AABB_tree<CGAL::AABB_traits<Kernel, CGAL::AABB_face_graph_triangle_primitive<Mesh>>>;
-  Tree tree(faces(input).first, faces(input).second, input);
-  tree.accelerate_distance_queries();
-  double largest = 0;
-  for (auto v : vertices(mesh))
-    largest = std::max(largest, std::sqrt(tree.squared_distance(mesh.point(v))));
-  return largest;
-}
-
-// CGAL's smoothing as `mesh_repair smooth --method cgal` runs it.
-void cgal_smooth(Mesh& mesh) {
-  CGAL::Polygon_mesh_processing::angle_and_area_smoothing(mesh);
-  CGAL::Polygon_mesh_processing::tangential_relaxation(mesh);
-}
+// The largest distance from `mesh`'s vertices to `input`'s triangles, and CGAL's smoothing as
+// `mesh_repair smooth --method cgal` runs it (test-support library).
+using mesh_repair_test::cgal_smooth;
+using mesh_repair_test::max_distance_to;
 
 // The paper's mapping: every node on the full G1 surface (tangent scale 1). On this sphere the
 // Walton-Meek patches lie within 2.5e-5 R of the sphere; the bound leaves room for the estimated
@@ -179,7 +162,7 @@ TEST_P(MgaRealMesh, MeanAlphaAtLeastCgalsAndMaxDistanceBelowCgals) {
   if (!std::filesystem::exists(path))
     GTEST_SKIP() << path << " absent (scripts/fetch_demo_data.sh)";
   Mesh input;
-  ASSERT_TRUE(CGAL::Polygon_mesh_processing::IO::read_polygon_mesh(path, input));
+  ASSERT_TRUE(mesh_repair_test::read_repaired_polygon_mesh(path, input));
   Mesh ours = input, cgal = input;
   const auto result = MR::mga_smooth(ours, MR::parameters::number_of_threads(2).random_seed(1));
   cgal_smooth(cgal);

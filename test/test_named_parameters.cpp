@@ -8,12 +8,12 @@
 #include <CGAL/Mesh_repair/generators.h>
 #include <CGAL/Mesh_repair/hole_filling/shape_prediction.h>
 #include <CGAL/Mesh_repair/optimize_mesh.h>
-#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <gtest/gtest.h>
 
-#include "sliver_grid.h"
+#include "support/cgal_calls.h"
+#include "support/sliver_grid.h"
 
 #include <array>
 #include <cmath>
@@ -29,7 +29,7 @@ namespace MR = CGAL::Mesh_repair;
 
 Mesh from_soup(const std::vector<Point>& points, const std::vector<std::vector<std::size_t>>& f) {
   Mesh mesh;
-  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, f, mesh);
+  mesh_repair_test::polygon_soup_to_polygon_mesh(points, f, mesh);
   return mesh;
 }
 

@@ -6,14 +6,13 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Mesh_repair/internal/genetic/ga_triangulation.h>
-#include <CGAL/Polygon_mesh_processing/distance.h>
-#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #include <gtest/gtest.h>
 
-#include "sliver_grid.h"
+#include "support/cgal_calls.h"
+#include "support/sliver_grid.h"
 
 #include <cmath>
 #include <set>
@@ -25,7 +24,7 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
 using Mesh = CGAL::Surface_mesh<Point>;
 namespace MR = CGAL::Mesh_repair;
-namespace PMP = CGAL::Polygon_mesh_processing;
+namespace support = mesh_repair_test;
 
 void expect_valid(Mesh& mesh, bool closed) {
   mesh.collect_garbage();
@@ -34,7 +33,7 @@ void expect_valid(Mesh& mesh, bool closed) {
   if (closed) {
     EXPECT_TRUE(CGAL::is_closed(mesh));
   }
-  EXPECT_FALSE(PMP::does_self_intersect(mesh));
+  EXPECT_FALSE(support::does_self_intersect(mesh));
 }
 
 bool on_cube_edge(const Point& p, double size) {
@@ -92,13 +91,11 @@ TEST(OptimizeMesh, PlanarGridReducesToFewTrianglesWithZeroHausdorffError) {
   MR::optimize_mesh(grid, MR::parameters::target_face_ratio(0.01));
   expect_valid(grid, false);
   EXPECT_LE(grid.number_of_faces(), 40u);
-  const double there = PMP::approximate_Hausdorff_distance<CGAL::Sequential_tag>(
-      grid, input, PMP::parameters::number_of_points_per_area_unit(4000));
-  const double back = PMP::approximate_Hausdorff_distance<CGAL::Sequential_tag>(
-      input, grid, PMP::parameters::number_of_points_per_area_unit(4000));
+  const double there = support::approximate_Hausdorff_distance(grid, input, 4000);
+  const double back = support::approximate_Hausdorff_distance(input, grid, 4000);
   EXPECT_EQ(there, 0.0);
   EXPECT_EQ(back, 0.0);
-  EXPECT_NEAR(PMP::area(grid), 1.0, 1e-12);
+  EXPECT_NEAR(support::area(grid), 1.0, 1e-12);
 }
 
 TEST(OptimizeMesh, QualityModeRaisesMinimumAngleOfSliversAtConstantFaceCount) {
@@ -206,7 +203,7 @@ double reduced_vertex_error(bool error_tracking) {
   expect_valid(bump, false);
   std::vector<Point> points;
   for (auto v : input.vertices()) points.push_back(input.point(v));
-  return PMP::max_distance_to_triangle_mesh<CGAL::Sequential_tag>(points, bump);
+  return support::max_distance_to_triangle_mesh(points, bump);
 }
 
 TEST(OptimizeMesh, DistanceControlKeepsInputNodesCloserToTheReducedSurface) {

@@ -5,7 +5,7 @@
 // the corpus is absent.
 #include <gtest/gtest.h>
 
-#include "written_file_check.h"
+#include "support/written_file_check.h"
 
 #include <unistd.h>
 

@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "scratch_folder.h"
-#include "written_file_check.h"
+#include "support/written_file_check.h"
 
 #include <cstdlib>
 #include <filesystem>

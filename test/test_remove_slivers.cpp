@@ -1,6 +1,6 @@
 // remove_slivers (thesis 4.5, Figures 4.13-4.14): short-edge slivers collapse, others flip,
 // features stay, and no change folds, pinches or self-intersects the mesh.
-#include "stitch_test_meshes.h"
+#include "support/stitch_test_meshes.h"
 
 #include <CGAL/Mesh_repair/quality.h>
 #include <CGAL/Mesh_repair/remove_slivers.h>

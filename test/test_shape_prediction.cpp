@@ -7,11 +7,11 @@
 #include <CGAL/Mesh_repair/generators.h>
 #include <CGAL/Mesh_repair/implant_patch.h>
 #include <CGAL/Mesh_repair/hole_filling/shape_prediction.h>
-#include <CGAL/Polygon_mesh_processing/border.h>
-#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <gtest/gtest.h>
+
+#include "support/cgal_calls.h"
 
 #include <cmath>
 #include <functional>
@@ -23,7 +23,7 @@ using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = K::Point_3;
 using Mesh = CGAL::Surface_mesh<Point>;
 namespace MR = CGAL::Mesh_repair;
-namespace PMP = CGAL::Polygon_mesh_processing;
+namespace support = mesh_repair_test;
 namespace sp = CGAL::Mesh_repair::internal::shape_prediction;
 
 // Removes the faces whose centroid satisfies `inside`; returns a border halfedge of the hole.
@@ -44,9 +44,7 @@ Mesh::Halfedge_index punch(Mesh& mesh, const std::function<bool(const Point&)>& 
 }
 
 std::size_t border_cycle_count(const Mesh& mesh) {
-  std::vector<Mesh::Halfedge_index> cycles;
-  PMP::extract_boundary_cycles(mesh, std::back_inserter(cycles));
-  return cycles.size();
+  return support::boundary_cycles(mesh).size();
 }
 
 // Max distance of the patch vertices to the surface, over the bounding-box diagonal (Table 5.3).
@@ -132,7 +130,7 @@ TEST(ShapePrediction, PlanarHoleIsFilledInItsPlane) {
   EXPECT_EQ(border_cycle_count(mesh), before - 1);
   EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
   for (auto v : patch.vertices) EXPECT_LT(std::abs(mesh.point(v).z()), 1e-12);
-  EXPECT_FALSE(PMP::does_self_intersect(mesh));
+  EXPECT_FALSE(support::does_self_intersect(mesh));
 }
 
 TEST(ShapePrediction, SphereHoleOfFigure515MeetsTable53) {
@@ -145,7 +143,7 @@ TEST(ShapePrediction, SphereHoleOfFigure515MeetsTable53) {
   EXPECT_EQ(border_cycle_count(mesh), 0u);
   EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
   EXPECT_TRUE(CGAL::is_closed(mesh));
-  EXPECT_FALSE(PMP::does_self_intersect(mesh));
+  EXPECT_FALSE(support::does_self_intersect(mesh));
   EXPECT_GT(patch.vertices.size(), 50u);
   // The front tested its smoothed patch exactly against itself and the sphere (so fill_holes
   // does not test it again), and the whole-mesh test above agrees.
@@ -164,7 +162,7 @@ TEST(ShapePrediction, TorusHoleOfFigure516MeetsTable53) {
   ASSERT_TRUE(report.filled) << report.failure;
   EXPECT_TRUE(CGAL::is_closed(mesh));
   EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
-  EXPECT_FALSE(PMP::does_self_intersect(mesh));
+  EXPECT_FALSE(support::does_self_intersect(mesh));
   const double diagonal =
       std::sqrt(2 * std::pow(2 * (torus_major + torus_minor), 2) + std::pow(2 * torus_minor, 2));
   const double einf = normalised_einf(mesh, patch, torus_distance, diagonal);
@@ -320,7 +318,7 @@ TEST(ShapePrediction, ThickenedImplantPatchIsAClosedSolid) {
   const Mesh solid = MR::thicken_patch(implant, 0.02);
   EXPECT_TRUE(CGAL::is_closed(solid));
   EXPECT_TRUE(CGAL::is_valid_polygon_mesh(solid));
-  EXPECT_FALSE(PMP::does_self_intersect(solid));
+  EXPECT_FALSE(support::does_self_intersect(solid));
   EXPECT_EQ(
       solid.number_of_faces(), 2 * implant.number_of_faces() + 2 * [&] {
         std::size_t n = 0;

@@ -1,13 +1,11 @@
 // stitch_gaps (thesis 4.2, 4.3.1): gaps, overlaps and non-matching nodes closed within tolerance,
 // nothing merged beyond it.
-#include "stitch_test_meshes.h"
+#include "support/cgal_calls.h"
+#include "support/stitch_test_meshes.h"
 
 #include <CGAL/Mesh_repair/remove_overlaps.h>
 #include <CGAL/Mesh_repair/stitch_gaps.h>
-#include <CGAL/Polygon_mesh_processing/stitch_borders.h>
-#include <CGAL/Polygon_mesh_processing/distance.h>
-#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
-#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -18,6 +16,7 @@ namespace {
 using namespace stitch_test;
 namespace MR = CGAL::Mesh_repair;
 namespace PMP = CGAL::Polygon_mesh_processing;
+namespace support = mesh_repair_test;
 
 void expect_closed_manifold_valid(const Mesh& mesh, const MR::Stitch_result& result) {
   EXPECT_TRUE(result.valid);
@@ -164,7 +163,7 @@ TEST(StitchGaps, RelativeToleranceIsAFractionOfTheBoundingBoxDiagonal) {
 TEST(StitchGaps, RealMeshCutAndJitteredIsRestored) {
   const std::string path = std::string(MESH_REPAIR_DEMO_DATA_DIR) + "/elephant.off";
   Mesh elephant;
-  if (!std::filesystem::exists(path) || !CGAL::IO::read_polygon_mesh(path, elephant))
+  if (!std::filesystem::exists(path) || !support::read_polygon_mesh(path, elephant))
     GTEST_SKIP() << "libcgal-demo mesh " << path << " absent (scripts/fetch_demo_data.sh)";
   ASSERT_TRUE(CGAL::is_closed(elephant));
   double shortest = std::numeric_limits<double>::infinity();
@@ -178,17 +177,16 @@ TEST(StitchGaps, RealMeshCutAndJitteredIsRestored) {
   EXPECT_EQ(pieces.number_of_faces(), elephant.number_of_faces());
   std::vector<Point> points;
   for (auto v : vertices(pieces)) points.push_back(pieces.point(v));
-  const double distance =
-      PMP::max_distance_to_triangle_mesh<CGAL::Sequential_tag>(points, elephant);
+  const double distance = support::max_distance_to_triangle_mesh(points, elephant);
   EXPECT_LT(distance, gap);
 }
 
 TEST(StitchGaps, QuadsToStitchDemoMeshLosesBorders) {
   const std::string path = std::string(MESH_REPAIR_DEMO_DATA_DIR) + "/quads_to_stitch.off";
   Mesh quads;
-  if (!std::filesystem::exists(path) || !CGAL::IO::read_polygon_mesh(path, quads))
+  if (!std::filesystem::exists(path) || !support::read_polygon_mesh(path, quads))
     GTEST_SKIP() << "libcgal-demo mesh " << path << " absent (scripts/fetch_demo_data.sh)";
-  PMP::triangulate_faces(quads);
+  support::triangulate_faces(quads);
   const std::size_t borders_before = border_cycle_count(quads);
   const MR::Stitch_result result = MR::stitch_gaps(quads);
   EXPECT_TRUE(result.valid);
@@ -261,7 +259,7 @@ TEST(GlueBorderPairs, GluesLikeCgalStitchBordersAndClosesTheMesh) {
     ASSERT_GT(pairs.size(), 20u);
     Mesh ours = pieces, cgal = pieces;
     EXPECT_EQ(MR::internal::glue_border_halfedge_pairs(ours, pairs), pairs.size());
-    EXPECT_EQ(PMP::stitch_borders(cgal, pairs), pairs.size());
+    EXPECT_EQ(support::stitch_borders(cgal, pairs), pairs.size());
     expect_same_connectivity(ours, cgal);
     EXPECT_TRUE(CGAL::is_valid_polygon_mesh(ours));
     EXPECT_TRUE(CGAL::is_closed(ours));
@@ -291,7 +289,7 @@ TEST(GlueBorderPairs, RefusesAPairThatWouldDuplicateAnInteriorEdge) {
       {v3_to_v2, v2_to_v1}};
   Mesh ours = fan, cgal = fan;
   EXPECT_EQ(MR::internal::glue_border_halfedge_pairs(ours, pairs), 0u);
-  EXPECT_EQ(PMP::stitch_borders(cgal, pairs), 0u);
+  EXPECT_EQ(support::stitch_borders(cgal, pairs), 0u);
   expect_same_connectivity(ours, fan);
   expect_same_connectivity(ours, cgal);
   EXPECT_TRUE(CGAL::is_valid_polygon_mesh(ours));

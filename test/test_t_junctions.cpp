@@ -1,6 +1,6 @@
 // repair_t_junctions (thesis 4.3, Figures 4.4-4.6): border nodes inside other border edges split
 // them and are merged; several nodes on one edge; nothing beyond the tolerance.
-#include "stitch_test_meshes.h"
+#include "support/stitch_test_meshes.h"
 
 #include <CGAL/Mesh_repair/repair_t_junctions.h>
 #include <gtest/gtest.h>

@@ -296,4 +296,23 @@ bool run_hole_benchmark(const PolygonMesh& pm, const Bench_surface<Point>& surfa
 }  // namespace Mesh_repair
 }  // namespace CGAL
 
+// Compiled once in the core library (internal/compiled_core.h): the tool's bench command and the
+// Python module fill and measure the punched holes of Surface_mesh<Epick>.
+#ifdef CGAL_MESH_REPAIR_COMPILED_CORE
+#include <CGAL/Mesh_repair/internal/compiled_core.h>
+namespace CGAL {
+namespace Mesh_repair {
+#ifndef CGAL_MESH_REPAIR_INSTANTIATE_HOLE_BENCHMARK
+extern
+#endif
+    template Hole_bench_fill<internal::Core_mesh>
+    bench_fill_holes<internal::Core_mesh, internal::Core_traits::Point_3>(
+        const internal::Core_mesh&,
+        const std::vector<Punched_hole<internal::Core_mesh, internal::Core_traits::Point_3>>&,
+        const Bench_surface<internal::Core_traits::Point_3>&, const Hole_bench_options&, double,
+        unsigned int, const Bench_method&);
+}  // namespace Mesh_repair
+}  // namespace CGAL
+#endif
+
 #endif  // CGAL_MESH_REPAIR_BENCH_HOLES_H

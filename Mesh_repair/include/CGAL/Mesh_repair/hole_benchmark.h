@@ -173,4 +173,38 @@ std::vector<std::size_t> count_patch_self_intersections(const PolygonMesh& pm,
 }  // namespace Mesh_repair
 }  // namespace CGAL
 
+// Compiled once in the core library (internal/compiled_core.h): the tool's bench command, the
+// Python module and the suites punch and measure holes on Surface_mesh<Epick>.
+#ifdef CGAL_MESH_REPAIR_COMPILED_CORE
+#include <CGAL/Mesh_repair/internal/compiled_core.h>
+namespace CGAL {
+namespace Mesh_repair {
+#ifndef CGAL_MESH_REPAIR_INSTANTIATE_HOLE_BENCHMARK
+extern
+#endif
+    template Punch_result<internal::Core_mesh, internal::Core_traits::Point_3>
+    internal::hole_benchmark::punch_holes<internal::Core_mesh, internal::Core_vpm>(
+        internal::Core_mesh&, internal::Core_vpm, std::size_t, double, Hole_shape, unsigned int);
+#ifndef CGAL_MESH_REPAIR_INSTANTIATE_HOLE_BENCHMARK
+extern
+#endif
+    template Hole_fill_metrics
+    measure_filled_hole<internal::Core_mesh, internal::Core_traits::Point_3,
+                        parameters::Default_named_parameters>(
+        const internal::Core_mesh&,
+        const Punched_hole<internal::Core_mesh, internal::Core_traits::Point_3>&, double,
+        const std::function<double(const internal::Core_traits::Point_3&)>&,
+        const parameters::Default_named_parameters&);
+#ifndef CGAL_MESH_REPAIR_INSTANTIATE_HOLE_BENCHMARK
+extern
+#endif
+    template std::vector<std::size_t>
+    count_patch_self_intersections<internal::Core_mesh,
+                                   std::vector<std::vector<internal::Core_mesh::Face_index>>>(
+        const internal::Core_mesh&,
+        const std::vector<std::vector<internal::Core_mesh::Face_index>>&);
+}  // namespace Mesh_repair
+}  // namespace CGAL
+#endif
+
 #endif  // CGAL_MESH_REPAIR_HOLE_BENCHMARK_H

@@ -515,6 +515,13 @@ CGAL_MESH_REPAIR_IO_EXTERN template std::string read_mesh(const std::string&, in
 CGAL_MESH_REPAIR_IO_EXTERN template std::string write_mesh(const std::string&,
                                                            const internal::Core_mesh&, bool);
 }  // namespace Mesh_repair
+// CGAL's face triangulation, which soup_to_mesh calls, and so do the commands and the smoother
+// on a mesh with polygons: one constrained Delaunay triangulation instantiated for all of them.
+namespace Polygon_mesh_processing {
+CGAL_MESH_REPAIR_IO_EXTERN template bool
+triangulate_faces<Mesh_repair::internal::Core_mesh, parameters::Default_named_parameters>(
+    Mesh_repair::internal::Core_mesh&, const parameters::Default_named_parameters&);
+}  // namespace Polygon_mesh_processing
 }  // namespace CGAL
 #undef CGAL_MESH_REPAIR_IO_EXTERN
 #endif

@@ -203,6 +203,14 @@ extern
                                                               const Mesh_points_options&,
                                                               Any_visitor);
 }  // namespace internal
+// CGAL's point readers (XYZ, OFF, PLY, LAS), for the tool's mesh-points command and the Python
+// module.
+#ifndef CGAL_MESH_REPAIR_INSTANTIATE_MESH_POINTS
+extern
+#endif
+    template std::string
+    read_point_file<internal::Core_traits::Point_3>(const std::string&,
+                                                    std::vector<internal::Core_traits::Point_3>&);
 }  // namespace Mesh_repair
 }  // namespace CGAL
 #endif

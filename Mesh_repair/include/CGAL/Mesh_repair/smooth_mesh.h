@@ -268,4 +268,24 @@ inline void write_report(Json_writer& json, const std::string& input, const std:
 }  // namespace Mesh_repair
 }  // namespace CGAL
 
+// Compiled once in the core library (internal/compiled_core.h): the tool's smooth command and the
+// Python module both call it.
+#ifdef CGAL_MESH_REPAIR_COMPILED_CORE
+#include <CGAL/Mesh_repair/internal/compiled_core.h>
+namespace CGAL {
+namespace Mesh_repair {
+#ifndef CGAL_MESH_REPAIR_INSTANTIATE_SMOOTH_MESH
+extern
+#endif
+    template Smooth_mesh_result
+    smooth_mesh<internal::Core_mesh>(internal::Core_mesh&, const Smooth_mesh_options&, Any_visitor);
+#ifndef CGAL_MESH_REPAIR_INSTANTIATE_SMOOTH_MESH
+extern
+#endif
+    template Smoothing_quality
+    smoothing_quality<internal::Core_mesh>(const internal::Core_mesh&);
+}  // namespace Mesh_repair
+}  // namespace CGAL
+#endif
+
 #endif  // CGAL_MESH_REPAIR_SMOOTH_MESH_H

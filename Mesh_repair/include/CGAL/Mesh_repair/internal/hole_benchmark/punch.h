@@ -402,9 +402,11 @@ class Hole_puncher {
   typename boost::property_map<PolygonMesh, CGAL::dynamic_vertex_property_t<double>>::type rho_;
 };
 
+// (The return type is spelt out, not `auto`, so that the compiled core can instantiate it once.)
 template <class PolygonMesh, class VertexPointMap>
-auto punch_holes(PolygonMesh& pm, VertexPointMap vpm, std::size_t number_of_holes,
-                 double radius_fraction, Hole_shape shape, unsigned int seed) {
+Punch_result<PolygonMesh, typename boost::property_traits<VertexPointMap>::value_type> punch_holes(
+    PolygonMesh& pm, VertexPointMap vpm, std::size_t number_of_holes, double radius_fraction,
+    Hole_shape shape, unsigned int seed) {
   using Puncher = Hole_puncher<PolygonMesh, VertexPointMap>;
   Punch_result<PolygonMesh, typename Puncher::Point> result;
   result.requested = number_of_holes;

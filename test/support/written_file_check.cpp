@@ -1,17 +1,12 @@
 // Copyright (c) 2026 Mesh_repair developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef MESH_REPAIR_TEST_WRITTEN_FILE_CHECK_H
-#define MESH_REPAIR_TEST_WRITTEN_FILE_CHECK_H
+// The written file against its report (written_file_check.h), compiled once for the CLI suites.
+#include "support/written_file_check.h"
 
-// The written file against its report, for the CLI suites: the output is read back with CGAL's
-// own reader (`Polygon_mesh_processing::IO::read_polygon_mesh`: the soup repaired, coincident
-// points merged, oriented, then built), not with ours, and the report of `mesh_repair repair`
-// must say what that reading shows.
+#include "support/cgal_calls.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/polygon_soup_io.h>
-#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
-#include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
@@ -28,18 +23,7 @@
 
 namespace mesh_repair_test {
 
-/// What CGAL's reading of a mesh file shows.
-struct Cgal_reading {
-  bool readable = false;
-  std::size_t points = 0, polygons = 0;  ///< in the file
-  std::size_t coincident_points = 0;     ///< points of the file at the position of another
-  std::size_t duplicated_polygons = 0;   ///< after merging points, either orientation
-  std::size_t vertices = 0, faces = 0, border_cycles = 0;
-  std::size_t non_manifold_edges = 0, non_manifold_vertices = 0;
-  bool valid = false, closed = false, manifold = false;
-};
-
-namespace detail {
+namespace {
 struct Non_manifold {
   std::set<std::pair<std::size_t, std::size_t>> edges;
   std::set<std::size_t> vertices;
@@ -53,12 +37,9 @@ struct Orientation_visitor : CGAL::Polygon_mesh_processing::Default_orientation_
   }
   void non_manifold_vertex(std::size_t v, std::size_t) { found->vertices.insert(v); }
 };
-}  // namespace detail
+}  // namespace
 
-/// Reads `path` as CGAL's `Polygon_mesh_processing::IO::read_polygon_mesh` does (the same calls,
-/// with a visitor that counts the non-manifold elements the orientation splits), and checks that
-/// the mesh built is the one `read_polygon_mesh` itself builds.
-inline Cgal_reading read_like_cgal(const std::string& path) {
+Cgal_reading read_like_cgal(const std::string& path) {
   namespace PMP = CGAL::Polygon_mesh_processing;
   using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
   using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
@@ -72,17 +53,17 @@ inline Cgal_reading read_like_cgal(const std::string& path) {
   std::vector<std::vector<std::size_t>> merged = polygons;
   r.duplicated_polygons = PMP::merge_duplicate_polygons_in_polygon_soup(points, merged);
   PMP::repair_polygon_soup(points, polygons);
-  detail::Non_manifold found;
+  Non_manifold found;
   PMP::orient_polygon_soup(points, polygons,
-                           CGAL::parameters::visitor(detail::Orientation_visitor(&found)));
+                           CGAL::parameters::visitor(Orientation_visitor(&found)));
   Mesh mesh;
-  if (!PMP::IO::read_polygon_mesh(path, mesh)) return r;
+  if (!read_repaired_polygon_mesh(path, mesh)) return r;
   r.readable = true;
   r.vertices = mesh.number_of_vertices();
   r.faces = mesh.number_of_faces();
   r.valid = CGAL::is_valid_polygon_mesh(mesh);
-  std::vector<Mesh::Halfedge_index> cycles, pinched;
-  PMP::extract_boundary_cycles(mesh, std::back_inserter(cycles));
+  const std::vector<Mesh::Halfedge_index> cycles = boundary_cycles(mesh);
+  std::vector<Mesh::Halfedge_index> pinched;
   PMP::non_manifold_vertices(mesh, std::back_inserter(pinched));
   r.border_cycles = cycles.size();
   r.closed = r.faces > 0 && cycles.empty();
@@ -94,15 +75,14 @@ inline Cgal_reading read_like_cgal(const std::string& path) {
   return r;
 }
 
-inline std::string file_text(const std::string& path) {
+std::string file_text(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::stringstream text;
   text << in.rdbuf();
   return text.str();
 }
 
-/// The text of the object `"key": {...}` that is a member of the report's top-level object.
-inline std::string member_object(const std::string& json, const std::string& key) {
+std::string member_object(const std::string& json, const std::string& key) {
   const std::string opening = "\n  \"" + key + "\": {";
   const std::size_t start = json.find(opening);
   if (start == std::string::npos) return {};
@@ -110,28 +90,26 @@ inline std::string member_object(const std::string& json, const std::string& key
   return json.substr(start, end == std::string::npos ? std::string::npos : end - start);
 }
 
-/// The value (number, true/false or a quoted string's content) of a direct member of an
-/// object returned by `member_object`; empty if absent.
-inline std::string member_value(const std::string& object, const std::string& key) {
+std::string member_value(const std::string& object, const std::string& key) {
   const std::regex pattern("\n    \"" + key + "\": (\"([^\"]*)\"|[^,\n]+)");
   std::smatch match;
   if (!std::regex_search(object, match, pattern)) return {};
   return match[2].matched ? std::string(match[2]) : std::string(match[1]);
 }
 
-inline long long member_integer(const std::string& object, const std::string& key) {
+long long member_integer(const std::string& object, const std::string& key) {
   const std::string value = member_value(object, key);
   return value.empty() ? -1 : std::stoll(value);
 }
 
-inline const char* boolean(bool b) {
+namespace {
+const char* boolean(bool b) {
   return b ? "true" : "false";
 }
+}  // namespace
 
-/// The report of `mesh_repair repair` says what CGAL's reading of the written file shows, and
-/// the exit status is the report's status. `name` labels the failures.
-inline void expect_report_is_the_reading(const std::string& report_path, const Cgal_reading& read,
-                                         int exit_status, const std::string& name) {
+void expect_report_is_the_reading(const std::string& report_path, const Cgal_reading& read,
+                                  int exit_status, const std::string& name) {
   const std::string json = file_text(report_path);
   const std::string repair = member_object(json, "repair");
   const std::string written = member_object(json, "written_file");
@@ -178,5 +156,3 @@ inline void expect_report_is_the_reading(const std::string& report_path, const C
 }
 
 }  // namespace mesh_repair_test
-
-#endif  // MESH_REPAIR_TEST_WRITTEN_FILE_CHECK_H

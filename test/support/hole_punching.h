@@ -4,10 +4,9 @@
 #define MESH_REPAIR_TEST_HOLE_PUNCHING_H
 
 // Test helpers: punch a disc of faces around a point, so tests can fill a hole whose truth is
-// known, and count border cycles.
+// known, and count border cycles. Compiled once in the test-support library (hole_punching.cpp).
 
-#include <CGAL/Mesh_repair/internal/hole_benchmark/punch.h>
-#include <CGAL/Mesh_repair/internal/hole_filling/border_cycles.h>
+#include "support/cgal_calls.h"
 
 #include <cstddef>
 
@@ -15,17 +14,10 @@ namespace mesh_repair_test {
 
 /// Removes a disc of faces around `center` (the library's one puncher, see
 /// `internal::hole_benchmark::punch_ball_hole`). Returns the number of faces removed.
-template <class Mesh, class Point>
-std::size_t punch_hole(Mesh& mesh, const Point& center, double radius) {
-  std::size_t removed = 0;
-  CGAL::Mesh_repair::internal::hole_benchmark::punch_ball_hole(mesh, center, radius, &removed);
-  return removed;
-}
+std::size_t punch_hole(Support_mesh& mesh, const Support_point& center, double radius);
 
-template <class Mesh>
-std::size_t count_border_cycles(const Mesh& mesh) {
-  return CGAL::Mesh_repair::internal::border_cycles(mesh).size();
-}
+/// The border cycles of `mesh` as the library counts them (`internal::border_cycles`).
+std::size_t count_border_cycles(const Support_mesh& mesh);
 
 }  // namespace mesh_repair_test
 

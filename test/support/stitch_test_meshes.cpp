@@ -1,64 +1,35 @@
-// Meshes with gaps, overlaps and T-junctions built like the thesis figures (4.8, 4.16, 4.17), and
-// the geometric facts the stitching tests check. Shared by test_stitch_gaps, test_t_junctions and
-// test_remove_slivers.
-#ifndef MESH_REPAIR_TEST_STITCH_TEST_MESHES_H
-#define MESH_REPAIR_TEST_STITCH_TEST_MESHES_H
+// Copyright (c) 2026 Mesh_repair developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The stitching suites' meshes and checks (stitch_test_meshes.h), compiled once.
+#include "support/stitch_test_meshes.h"
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Mesh_repair/generators.h>
-#include <CGAL/Polygon_mesh_processing/border.h>
-#include <CGAL/Polygon_mesh_processing/manifoldness.h>
-#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
-#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include "support/cgal_calls.h"
+
 #include <CGAL/Random.h>
-#include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/Euler_operations.h>
-#include <CGAL/boost/graph/helpers.h>
 
-#include <array>
 #include <cmath>
-#include <functional>
 #include <map>
 #include <set>
-#include <vector>
 
 namespace stitch_test {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point = Kernel::Point_3;
-using Vector = Kernel::Vector_3;
-using Mesh = CGAL::Surface_mesh<Point>;
-using vertex_descriptor = Mesh::Vertex_index;
-using halfedge_descriptor = Mesh::Halfedge_index;
-using face_descriptor = Mesh::Face_index;
-
-struct Soup {
-  std::vector<Point> points;
-  std::vector<std::vector<std::size_t>> faces;
-};
-
-inline Mesh to_mesh(const Soup& soup) {
+Mesh to_mesh(const Soup& soup) {
   Mesh mesh;
-  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(soup.points, soup.faces, mesh);
+  mesh_repair_test::polygon_soup_to_polygon_mesh(soup.points, soup.faces, mesh);
   return mesh;
 }
 
-inline std::size_t border_cycle_count(const Mesh& mesh) {
-  std::vector<halfedge_descriptor> cycles;
-  CGAL::Polygon_mesh_processing::extract_boundary_cycles(mesh, std::back_inserter(cycles));
-  return cycles.size();
+std::size_t border_cycle_count(const Mesh& mesh) {
+  return mesh_repair_test::boundary_cycles(mesh).size();
 }
 
-inline std::size_t non_manifold_vertex_count(const Mesh& mesh) {
-  std::size_t count = 0;
-  for (vertex_descriptor v : vertices(mesh))
-    if (CGAL::Polygon_mesh_processing::is_non_manifold_vertex(v, mesh)) ++count;
-  return count;
+std::size_t non_manifold_vertex_count(const Mesh& mesh) {
+  return mesh_repair_test::non_manifold_vertex_count(mesh);
 }
 
-/// Appends an (nu x nv)-cell grid over the parallelogram origin + s*u + t*v, s,t in [0,1].
-inline void add_grid_patch(Soup& soup, const Point& origin, const Vector& u, const Vector& v,
-                           int nu, int nv) {
+void add_grid_patch(Soup& soup, const Point& origin, const Vector& u, const Vector& v, int nu,
+                    int nv) {
   const std::size_t base = soup.points.size();
   for (int j = 0; j <= nv; ++j)
     for (int i = 0; i <= nu; ++i)
@@ -72,10 +43,7 @@ inline void add_grid_patch(Soup& soup, const Point& origin, const Vector& u, con
   }
 }
 
-/// Figure 4.16: the unit cube as six separately meshed faces, face k an n_k x n_k grid shrunk
-/// by `inset` on every side, so neighbouring faces have non-matching nodes and a gap of
-/// inset * sqrt(2) between their borders.
-inline Soup cube_of_separate_faces(double inset, const std::array<int, 6>& resolution) {
+Soup cube_of_separate_faces(double inset, const std::array<int, 6>& resolution) {
   Soup soup;
   const double a = inset, b = 1.0 - inset, w = b - a;
   // Each face: origin, u, v with u x v pointing outwards.
@@ -94,9 +62,7 @@ inline Soup cube_of_separate_faces(double inset, const std::array<int, 6>& resol
   return soup;
 }
 
-/// Figure 4.8: two patches of the curved surface z = 0.3 sin(2x) meeting along y = 0, the lower
-/// one with `nodes_below` cells along x and the upper one with `nodes_above`, `gap` apart in y.
-inline Soup curved_patches(int nodes_below, int nodes_above, double gap) {
+Soup curved_patches(int nodes_below, int nodes_above, double gap) {
   Soup soup;
   auto add = [&](double y0, double y1, int nx, int ny) {
     const std::size_t base = soup.points.size();
@@ -119,11 +85,7 @@ inline Soup curved_patches(int nodes_below, int nodes_above, double gap) {
   return soup;
 }
 
-/// Cuts `closed` into `patch_count` patches (faces go to the nearest of random seed faces, so
-/// the cuts are curves), gives every patch its own copy of its vertices, then moves every copy of
-/// a cut vertex independently by up to `gap / 2` (random direction), so the two sides of every cut
-/// are at most `gap` apart, overlap or leave a gap, with non-matching positions.
-inline Soup cut_and_jitter(const Mesh& closed, int patch_count, double gap, unsigned seed) {
+Soup cut_and_jitter(const Mesh& closed, int patch_count, double gap, unsigned seed) {
   CGAL::Random random(seed);
   std::vector<Point> centroids;
   for (face_descriptor f : faces(closed)) {
@@ -174,9 +136,7 @@ inline Soup cut_and_jitter(const Mesh& closed, int patch_count, double gap, unsi
   return soup;
 }
 
-/// Splits every `every`-th border edge of `mesh` at parameter 0.4 (with its incident triangle),
-/// so that the nodes on the two sides of a cut stop matching (T-junctions).
-inline std::size_t split_border_edges(Mesh& mesh, int every) {
+std::size_t split_border_edges(Mesh& mesh, int every) {
   std::vector<halfedge_descriptor> border;
   for (halfedge_descriptor h : halfedges(mesh))
     if (is_border(h, mesh)) border.push_back(h);
@@ -192,8 +152,7 @@ inline std::size_t split_border_edges(Mesh& mesh, int every) {
   return splits;
 }
 
-/// Largest distance from a vertex of `mesh` to the analytic unit sphere.
-inline double max_distance_to_unit_sphere(const Mesh& mesh) {
+double max_distance_to_unit_sphere(const Mesh& mesh) {
   double worst = 0;
   for (vertex_descriptor v : vertices(mesh)) {
     const Point& p = mesh.point(v);
@@ -203,10 +162,8 @@ inline double max_distance_to_unit_sphere(const Mesh& mesh) {
   return worst;
 }
 
-inline bool self_intersects(const Mesh& mesh) {
-  return CGAL::Polygon_mesh_processing::does_self_intersect(mesh);
+bool self_intersects(const Mesh& mesh) {
+  return mesh_repair_test::does_self_intersect(mesh);
 }
 
 }  // namespace stitch_test
-
-#endif  // MESH_REPAIR_TEST_STITCH_TEST_MESHES_H
