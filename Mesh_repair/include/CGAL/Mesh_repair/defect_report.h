@@ -8,7 +8,7 @@
 // coordinates are doubles. Plain data, no template, so that reports of any mesh type share one
 // JSON writer and one text summary.
 
-#include <CGAL/Mesh_repair/io.h>
+#include <CGAL/Mesh_repair/soup_repair_report.h>
 #include <CGAL/Mesh_repair/quality.h>
 
 #include <array>
