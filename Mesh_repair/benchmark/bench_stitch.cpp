@@ -4,7 +4,7 @@
 // (doc/benchmarks.md "## stitch_gaps", doc/stitch_gaps.md, doc/remove_slivers.md).
 //   bench_stitch speed [BORDER_VERTICES...]   stitching time on strips separated by gaps
 //   bench_stitch tables                        the thesis-figure cases, ours against CGAL's
-#include "stitch_test_meshes.h"
+#include "support/stitch_test_meshes.h"
 
 #include <CGAL/Mesh_repair/quality.h>
 #include <CGAL/Mesh_repair/remove_slivers.h>
