@@ -23,6 +23,7 @@ MESH_EXTENSIONS = (".off", ".obj", ".stl", ".ply")
 
 #: The per-file figures of the summary, in the CLI's column order (Mesh_repair/cli/batch.cpp).
 FIGURE_KEYS = (
+    "repair_status",
     "faces_before",
     "faces_after",
     "holes",
@@ -39,9 +40,14 @@ FIGURE_KEYS = (
     "only_holes_before",
 )
 
-# The child's exit statuses beyond the CLI's 0 (repaired), 1 (incomplete), 2 (bad input).
-_EXIT_OUT_OF_MEMORY = 3
-_EXIT_ERROR = 4
+# The child exits like the CLI: 0 repaired, 1 incomplete, 2 bad input, 3 repaired except what
+# was kept on purpose (Mesh_repair/cli/common.h); and beyond the CLI's:
+_EXIT_COMPLETE_EXCEPT_KEPT = 3
+_EXIT_OUT_OF_MEMORY = 4
+_EXIT_ERROR = 5
+_OUTCOME_OF_STATUS = {0: "repaired", 1: "incomplete", _EXIT_COMPLETE_EXCEPT_KEPT: "repaired_except_kept"}
+_EXIT_OF_REPAIR_STATUS = {"complete": 0, "incomplete": 1,
+                          "complete_except_kept": _EXIT_COMPLETE_EXCEPT_KEPT}
 
 
 def repair_many(paths, out_dir, client=None, timeout=600, jobs=None, memory_limit=None,
@@ -57,7 +63,9 @@ def repair_many(paths, out_dir, client=None, timeout=600, jobs=None, memory_limi
     python_executable: the interpreter of the children (default: the worker's own).
     repair_options: passed to ``mesh_repair.repair`` (e.g. ``fill="liepa"``); ``threads``
         defaults to 1 here: the parallelism is across files, one per worker thread.
-    Outcomes: repaired, incomplete, failed, crashed, timeout, skipped (as the CLI's).
+    Outcomes: repaired, repaired_except_kept, incomplete, failed, crashed, timeout, skipped (as
+    the CLI's; ``repair_status`` is the report's ``complete``, ``complete_except_kept`` or
+    ``incomplete``).
     """
     if not (isinstance(timeout, (int, float)) and timeout > 0):
         raise ValueError("timeout must be positive")
@@ -231,7 +239,7 @@ def _run_child(child, log_path, spec):
             raise
     if code < 0:
         return -1, "crashed"
-    return code, {0: "repaired", 1: "incomplete"}.get(code, "failed")
+    return code, _OUTCOME_OF_STATUS.get(code, "failed")
 
 
 def _kill_session(process):
@@ -283,6 +291,13 @@ def _text(value):
     return str(value)
 
 
+def _json_value(value):
+    """A figure as the CLI's summary.jsonl has it: numbers bare, text quoted, missing null."""
+    if isinstance(value, str):
+        return json.dumps(value)
+    return _text(value) or "null"
+
+
 def _write_summaries(out_dir, rows):
     columns = ["file", "outcome", "exit_status", "seconds", *FIGURE_KEYS, "note"]
     csv = [",".join(columns)]
@@ -294,7 +309,7 @@ def _write_summaries(out_dir, rows):
         csv.append(",".join(cells))
         fields = [f'"file":{json.dumps(row["file"])}', f'"outcome":"{row["outcome"]}"',
                   f'"exit_status":{row["exit_status"]}', f'"seconds":{_text(row["seconds"])}']
-        fields += [f'"{k}":{_text(row[k]) or "null"}' for k in FIGURE_KEYS]
+        fields += [f'"{k}":{_json_value(row[k])}' for k in FIGURE_KEYS]
         fields.append(f'"note":{json.dumps(row["note"])}')
         jsonl.append("{" + ",".join(fields) + "}")
     for name, lines in (("summary.csv", csv), ("summary.jsonl", jsonl)):
@@ -317,7 +332,7 @@ def _figures(report, status, seconds):
                       "inconsistent_orientation", "degenerate_faces", "needles", "caps",
                       "small_gaps", "t_junctions", "overlaps")))
     return {
-        "status": status, "faces_before": r["input_faces"], "faces_after": r["output_faces"],
+        "status": status, "repair_status": r["status"], "faces_before": r["input_faces"], "faces_after": r["output_faces"],
         "holes": len(r["holes"]), "holes_filled": r["holes_filled"],
         "holes_failed": r["holes_failed"], "holes_too_large": r["holes_too_large"],
         "sheet_borders_left_open": r["sheet_borders_left_open"],
@@ -330,7 +345,7 @@ def _figures(report, status, seconds):
 
 
 def _child_main(child):
-    """Repairs one file; exit status 0 repaired, 1 incomplete, 2 bad input, 3 out of memory."""
+    """Repairs one file; exits like the CLI (0, 1, 2, 3), 4 when out of memory."""
     import numpy  # noqa: F401 - imported before the memory limit, which is for the repair
 
     import mesh_repair
@@ -367,11 +382,11 @@ def _child_main(child):
     seconds = time.monotonic() - start
     report = result.report
     report["output"], report["seconds"] = child["output"], seconds
-    status = 0 if report["repair"]["complete"] else 1
+    status = _EXIT_OF_REPAIR_STATUS[report["repair"]["status"]]
     _save_json(child["report"], report)
     _save_json(child["summary"], _figures(report, status, seconds))
     print(f"{child['input']}: {report['repair']['output_faces']} faces, "
-          f"{'complete' if status == 0 else 'incomplete'}, {seconds:.3g} s")
+          f"{report['repair']['status']}, {seconds:.3g} s")
     return status
 
 

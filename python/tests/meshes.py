@@ -60,6 +60,17 @@ def holed_sphere(subdivisions=3, holes=2, radius=0.3):
     return punch_holes(v, f, centres, radius)
 
 
+def wavy_sheet(n=12):
+    """An open sheet over the unit square (z = 0.1 sin(3x) cos(2y)), n x n cells: its outline is
+    the border of an open surface, not a hole (the repair keeps it open, counted as kept)."""
+    x, y = np.meshgrid(np.linspace(0, 1, n + 1), np.linspace(0, 1, n + 1), indexing="ij")
+    v = np.column_stack([x.ravel(), y.ravel(), 0.1 * np.sin(3 * x.ravel()) * np.cos(2 * y.ravel())])
+    k = lambda i, j: i * (n + 1) + j  # noqa: E731
+    f = [[k(i, j), k(i + 1, j), k(i + 1, j + 1)] for i in range(n) for j in range(n)]
+    f += [[k(i, j), k(i + 1, j + 1), k(i, j + 1)] for i in range(n) for j in range(n)]
+    return v, np.array(f, dtype=np.int64)
+
+
 def jittered_sphere(subdivisions=3, amount=0.3, seed=1):
     """The icosphere with each vertex moved along the surface by up to `amount` x the local edge
     length, then back onto the sphere: the same closed surface with worse triangles."""

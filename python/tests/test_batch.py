@@ -10,18 +10,19 @@ import pytest
 
 import mesh_repair
 from mesh_repair.batch import FIGURE_KEYS, repair_many
-from meshes import holed_sphere
+from meshes import holed_sphere, wavy_sheet
 
 CLI_COLUMNS = ["file", "outcome", "exit_status", "seconds", *FIGURE_KEYS, "note"]
 
 
 @pytest.fixture
 def inputs(tmp_path):
-    """Four holed spheres, a crash, a hang, a broken file and a text file."""
+    """Four holed spheres, an open sheet, a crash, a hang, a broken file and a text file."""
     folder = tmp_path / "in"
     folder.mkdir()
     for k in range(4):
         mesh_repair.write(folder / f"sphere{k}.off", *holed_sphere(3, holes=k % 3 + 1))
+    mesh_repair.write(folder / "sheet.off", *wavy_sheet())
     mesh_repair.write(folder / "crash.off", *holed_sphere(2))
     mesh_repair.write(folder / "hang.off", *holed_sphere(2))
     (folder / "broken.off").write_text("OFF\n3 1 0\n0 0 0\n")
@@ -50,21 +51,28 @@ def check_outcomes(rows, out_dir):
     assert outcome == {
         "broken.off": "failed", "crash.off": "crashed", "hang.off": "timeout",
         "notes.txt": "skipped", "sphere0.off": "repaired", "sphere1.off": "repaired",
-        "sphere2.off": "repaired", "sphere3.off": "repaired"}
+        "sphere2.off": "repaired", "sphere3.off": "repaired", "sheet.off": "repaired_except_kept"}
     for k in range(4):
         row = next(r for r in rows if r["file"] == f"sphere{k}.off")
         assert row["holes_filled"] == row["holes"] == k % 3 + 1
         assert row["closed"] == 1 and row["valid"] == 1 and row["exit_status"] == 0
+        assert row["repair_status"] == "complete"
         back = mesh_repair.read(out_dir / f"sphere{k}.off")
         assert mesh_repair.check(*back[:2], self_intersections=False)["border_cycles"] == 0
         report = json.loads((out_dir / f"sphere{k}.off.report.json").read_text())
         assert report["repair"]["holes_filled"] == k % 3 + 1
+    # The open sheet's outline is kept, as the CLI does it: exit 3, counted, the file valid.
+    sheet = next(r for r in rows if r["file"] == "sheet.off")
+    assert (sheet["exit_status"], sheet["repair_status"]) == (3, "complete_except_kept")
+    assert sheet["sheet_borders_left_open"] == 1 and sheet["border_cycles_after"] == 1
+    assert sheet["valid"] == 1 and sheet["closed"] == 0
     with open(out_dir / "summary.csv") as f:
         table = list(csv.reader(f))
     assert table[0] == CLI_COLUMNS
     assert sorted(r[0] for r in table[1:]) == sorted(outcome)
     lines = (out_dir / "summary.jsonl").read_text().splitlines()
     assert [json.loads(line)["outcome"] for line in lines] == [r["outcome"] for r in rows]
+    assert [json.loads(line)["repair_status"] for line in lines] == [r["repair_status"] for r in rows]
     # No temporary or summary file of a child is left behind.
     assert not [p for p in os.listdir(out_dir) if p.startswith(".tmp-") or "summary.json" in p
                 and p.startswith(".")]
