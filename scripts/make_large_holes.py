@@ -13,29 +13,7 @@
 import math
 import sys
 
-
-def write_off(path, vertices, faces):
-    with open(path, "w") as out:
-        out.write(f"OFF\n{len(vertices)} {len(faces)} 0\n")
-        for v in vertices:
-            out.write(f"{v[0]:.9g} {v[1]:.9g} {v[2]:.9g}\n")
-        for f in faces:
-            out.write(f"{len(f)} {' '.join(map(str, f))}\n")
-
-
-def read_off(path):
-    lines = [l for l in open(path).read().split("\n") if l.strip() and not l.startswith("#")]
-    tokens = " ".join(lines).split()
-    if not tokens[0].endswith("OFF"):
-        sys.exit(f"{path}: not an OFF file")
-    nv, nf = int(tokens[1]), int(tokens[2])
-    vertices = [tuple(map(float, tokens[4 + 3 * k:7 + 3 * k])) for k in range(nv)]
-    faces, i = [], 4 + 3 * nv
-    for _ in range(nf):
-        k = int(tokens[i])
-        faces.append([int(x) for x in tokens[i + 1:i + 1 + k]])
-        i += 1 + k
-    return vertices, faces
+from off_io import read_off, write_off
 
 
 def normalized(p):

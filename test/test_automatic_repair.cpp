@@ -1,6 +1,7 @@
 // automatic_repair: the whole pipeline on synthetic defective meshes and real ones.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Mesh_repair/automatic_repair.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Mesh_repair/detect_defects.h>
 #include <CGAL/Mesh_repair/generators.h>
 #include <CGAL/Mesh_repair/io.h>
@@ -9,6 +10,7 @@
 
 #include "support/cgal_calls.h"
 #include "support/hole_punching.h"
+#include "support/stitch_test_meshes.h"
 
 #include <algorithm>
 #include <cmath>
@@ -485,6 +487,41 @@ TEST(AutomaticRepair, StitchingNeverAddsSelfIntersectionsOnCoarseCad) {
   bool trial = false;
   for (const auto& step : result.steps) trial = trial || step.name == "stitching trial";
   EXPECT_TRUE(trial);
+}
+
+// Cracked copies of closed real meshes (cut across, the sides 0.1% and 0.3% of the diagonal
+// apart, every third border edge split so the nodes do not match). On some, the derived
+// stitching tolerance makes faces intersect next to the crack; the stitching trial freezes those
+// vertices and stitches the rest, so every copy comes out closed and free of self-intersections.
+TEST(AutomaticRepair, CracksWithTJunctionsInRealMeshesAreClosedCleanly) {
+  double frozen = 0;
+  for (const char* name : {"femur.off", "couplingdown.off"}) {
+    const std::string path = std::string(MESH_REPAIR_DEMO_DATA_DIR) + "/" + name;
+    if (!std::filesystem::exists(path))
+      GTEST_SKIP() << "libcgal-demo meshes absent (" << path << ")";
+    Mesh closed;
+    MR::Soup_repair_report soup;
+    ASSERT_EQ(MR::read_mesh(path, closed, soup), "") << name;
+    const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(closed);
+    const double diagonal =
+        std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                  CGAL::square(box.zmax() - box.zmin()));
+    const Kernel::Vector_3 normal = Kernel::Vector_3(0.3, -0.5, 0.8) / std::sqrt(0.98);
+    for (double fraction : {0.001, 0.003}) {
+      Mesh cracked =
+          stitch_test::to_mesh(stitch_test::crack_across(closed, normal, fraction * diagonal));
+      ASSERT_GT(stitch_test::split_border_edges(cracked, 3), 0u);
+      ASSERT_GE(count_border_cycles(cracked), 2u) << name;
+      const auto result = MR::automatic_repair(cracked);
+      EXPECT_TRUE(CGAL::is_valid_polygon_mesh(cracked)) << name << ' ' << fraction;
+      EXPECT_TRUE(CGAL::is_closed(cracked)) << name << ' ' << fraction;
+      EXPECT_EQ(result.self_intersections_output, 0u) << name << ' ' << fraction;
+      EXPECT_EQ(result.holes.failed, 0u) << name << ' ' << fraction;
+      for (const auto& step : result.steps)
+        if (step.name == "tolerance stitching") frozen += step.count("frozen_vertices");
+    }
+  }
+  EXPECT_GT(frozen, 0.0);  // the trial had to freeze vertices on at least one copy
 }
 
 TEST(AutomaticRepair, TheOutlineOfALargeOpenSheetIsLeftOpenAndCounted) {

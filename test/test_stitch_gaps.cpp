@@ -9,7 +9,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <limits>
 #include <map>
 
 namespace {
@@ -212,6 +214,84 @@ TEST(StitchGaps, CubeWithCoincidentAndNearSeamsIsClosedWithoutLosingFaces) {
   EXPECT_EQ(cube.number_of_faces(), faces_before);
   EXPECT_LE(result.max_displacement, 0.01);
   EXPECT_FALSE(self_intersects(cube));
+}
+
+/// Each vertex's position and half its shortest incident edge: the move bound of the derived
+/// tolerance.
+std::vector<std::pair<Point, double>> positions_and_move_bounds(const Mesh& mesh) {
+  std::vector<std::pair<Point, double>> out;
+  for (vertex_descriptor v : vertices(mesh)) {
+    double shortest = std::numeric_limits<double>::infinity();
+    for (halfedge_descriptor h : halfedges_around_target(v, mesh))
+      shortest = std::min(
+          shortest, std::sqrt(CGAL::squared_distance(mesh.point(v), mesh.point(source(h, mesh)))));
+    out.emplace_back(mesh.point(v), 0.5 * shortest);
+  }
+  return out;
+}
+
+/// Every vertex of `before` that is still in `after` (stitching only removes glued copies and
+/// appends T-junction nodes) moved by at most its bound; returns the largest move.
+double expect_moves_within_bounds(const std::vector<std::pair<Point, double>>& before,
+                                  const Mesh& after) {
+  double largest = 0;
+  for (std::size_t i = 0; i < before.size(); ++i) {
+    const vertex_descriptor v(static_cast<Mesh::size_type>(i));
+    if (after.is_removed(v)) continue;
+    const double move = std::sqrt(CGAL::squared_distance(before[i].first, after.point(v)));
+    EXPECT_LE(move, before[i].second * (1 + 1e-12)) << "vertex " << i;
+    largest = std::max(largest, move);
+  }
+  return largest;
+}
+
+TEST(StitchGaps, DerivedToleranceMovesNoVertexByMoreThanHalfItsShortestEdge) {
+  // A coarse sheet facing a thin strip (cells 1 x 0.05) across a gap of 0.2, nodes offset by
+  // 0.3: half the border edges (0.5) would pair them; half the strip's shortest edge does not.
+  Soup soup;
+  add_grid_patch(soup, Point(0, -2, 0), Vector(10, 0, 0), Vector(0, 2, 0), 10, 2);
+  add_grid_patch(soup, Point(0.3, 0.2, 0), Vector(9, 0, 0), Vector(0, 0.05, 0), 9, 1);
+  Mesh strip = to_mesh(soup);
+  const auto strip_before = positions_and_move_bounds(strip);
+  const MR::Stitch_result strip_result = MR::stitch_gaps(strip);
+  EXPECT_TRUE(strip_result.valid);
+  EXPECT_LE(strip_result.max_move_to_shortest_edge, 0.5);
+  expect_moves_within_bounds(strip_before, strip);
+  EXPECT_EQ(border_cycle_count(strip), 2u);  // the gap is left to hole filling
+  // Cut spheres whose two sides are jittered (seeds not used elsewhere): every move within its
+  // bound, and none larger than the reported one.
+  Mesh sphere;
+  MR::make_sphere(sphere, Point(0, 0, 0), 1.0, 3);
+  for (unsigned seed : {11u, 12u, 13u}) {
+    Mesh pieces = to_mesh(cut_and_jitter(sphere, 6, 0.02, seed));
+    const auto before = positions_and_move_bounds(pieces);
+    const MR::Stitch_result result = MR::stitch_gaps(pieces);
+    EXPECT_TRUE(result.valid);
+    EXPECT_GT(result.node_merges, 20u);
+    EXPECT_LE(result.max_move_to_shortest_edge, 0.5);
+    // The kept vertex of a glued pair moved at most as far as the removed one (reported too).
+    const double measured = expect_moves_within_bounds(before, pieces);
+    EXPECT_GT(measured, 0.0);
+    EXPECT_LE(measured, result.max_displacement + 1e-12);
+  }
+}
+
+TEST(StitchGaps, ANodePairThatGluesNoEdgeStaysWhereItWas) {
+  // Two triangles whose corners are 0.001 apart: the pair is within tolerance, but no border
+  // edge pair matches, so merging would only leave two distinct vertices at one point.
+  Soup soup;
+  soup.points = {Point(0, 0, 0),      Point(1, 0, 0),     Point(0, 1, 0),
+                 Point(-0.001, 0, 0), Point(-1, -0.5, 0), Point(-0.5, -1, 0)};
+  soup.faces = {{0, 1, 2}, {3, 5, 4}};
+  Mesh mesh = to_mesh(soup);
+  const MR::Stitch_result result = MR::stitch_gaps(mesh);
+  EXPECT_EQ(result.node_merges, 1u);
+  EXPECT_EQ(result.edges_stitched, 0u);
+  EXPECT_EQ(result.unstitched_clusters, 1u);
+  EXPECT_EQ(result.unglued_nodes_restored, 2u);
+  EXPECT_EQ(result.max_displacement, 0.0);
+  for (std::size_t i = 0; i < soup.points.size(); ++i)
+    EXPECT_EQ(mesh.point(vertex_descriptor(static_cast<Mesh::size_type>(i))), soup.points[i]);
 }
 
 /// Pairs of border halfedges whose end points coincide in opposite directions, each halfedge in

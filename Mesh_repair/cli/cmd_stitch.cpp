@@ -65,7 +65,8 @@ int run_stitch(const std::vector<std::string>& args) {
               << " edges glued (tolerance " << result.merge_tolerance
               << (result.tolerance_derived ? ", derived" : "") << "); border cycles "
               << cycles_before << " -> " << cycles_after << ", max move " << result.max_displacement
-              << ", " << seconds << " s\n";
+              << " (" << result.max_move_to_shortest_edge << " of the shortest incident edge), "
+              << seconds << " s\n";
   }
   if (arguments.has("--report")) {
     std::ostringstream text;

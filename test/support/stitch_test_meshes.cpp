@@ -5,9 +5,11 @@
 
 #include "support/cgal_calls.h"
 
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Random.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <set>
@@ -129,6 +131,60 @@ Soup cut_and_jitter(const Mesh& closed, int patch_count, double gap, unsigned se
         }
         soup.points.push_back(p);
       }
+      polygon.push_back(it->second);
+    }
+    soup.faces.push_back(polygon);
+  }
+  return soup;
+}
+
+Soup crack_across(const Mesh& input, const Vector& normal, double gap) {
+  Mesh closed = input;  // with property maps of its own
+
+  std::vector<double> height;
+  for (face_descriptor f : faces(closed)) {
+    double sum = 0;
+    for (vertex_descriptor v : vertices_around_face(halfedge(f, closed), closed))
+      sum += (closed.point(v) - CGAL::ORIGIN) * normal;
+    height.push_back(sum / 3);
+  }
+  std::vector<double> sorted = height;
+  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+  const double cut = sorted[sorted.size() / 2];
+  // Pieces of one side cut off by the other (a face above among faces below) change sides, so
+  // each side is one piece and the crack one clean cut.
+  auto upper = closed.add_property_map<face_descriptor, bool>("f:upper", false).first;
+  {
+    std::size_t k = 0;
+    for (face_descriptor f : faces(closed)) upper[f] = height[k++] >= cut;
+  }
+  auto on_cut = closed.add_property_map<Mesh::Edge_index, bool>("e:on_cut", false).first;
+  for (auto e : edges(closed)) {
+    const halfedge_descriptor h = halfedge(e, closed);
+    on_cut[e] = upper[face(h, closed)] != upper[face(opposite(h, closed), closed)];
+  }
+  auto piece = closed.add_property_map<face_descriptor, std::size_t>("f:piece", 0).first;
+  const std::size_t pieces = CGAL::Polygon_mesh_processing::connected_components(
+      closed, piece, CGAL::parameters::edge_is_constrained_map(on_cut));
+  std::vector<std::size_t> size(pieces, 0);
+  for (face_descriptor f : faces(closed)) ++size[piece[f]];
+  std::size_t largest[2] = {pieces, pieces};
+  for (face_descriptor f : faces(closed)) {
+    std::size_t& best = largest[upper[f]];
+    if (best == pieces || size[piece[f]] > size[best]) best = piece[f];
+  }
+  std::vector<bool> upper_of_face;
+  for (face_descriptor f : faces(closed))
+    upper_of_face.push_back(piece[f] == largest[upper[f]] ? upper[f] : !upper[f]);
+  Soup soup;
+  std::map<std::pair<bool, vertex_descriptor>, std::size_t> copy;
+  std::size_t index = 0;
+  for (face_descriptor f : faces(closed)) {
+    const bool upper = upper_of_face[index++];
+    std::vector<std::size_t> polygon;
+    for (vertex_descriptor v : vertices_around_face(halfedge(f, closed), closed)) {
+      auto [it, inserted] = copy.emplace(std::make_pair(upper, v), soup.points.size());
+      if (inserted) soup.points.push_back(closed.point(v) + (upper ? gap : 0.0) * normal);
       polygon.push_back(it->second);
     }
     soup.faces.push_back(polygon);

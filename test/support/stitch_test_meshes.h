@@ -53,6 +53,11 @@ Soup curved_patches(int nodes_below, int nodes_above, double gap);
 /// are at most `gap` apart, overlap or leave a gap, with non-matching positions.
 Soup cut_and_jitter(const Mesh& closed, int patch_count, double gap, unsigned seed);
 
+/// `closed` cut across by the plane of unit `normal` through the median face centroid (faces go
+/// by their centroid, so the cut runs along edges), the upper side with its own copies of the cut
+/// vertices and moved by `gap` along `normal`: a crack whose sides are `gap` apart.
+Soup crack_across(const Mesh& closed, const Vector& normal, double gap);
+
 /// Splits every `every`-th border edge of `mesh` at parameter 0.4 (with its incident triangle),
 /// so that the nodes on the two sides of a cut stop matching (T-junctions).
 std::size_t split_border_edges(Mesh& mesh, int every);

@@ -65,7 +65,7 @@ Repair_options repair_options_from(const PolygonMesh& pm, const NamedParameters&
 ///   \cgalParamNBegin{merge_tolerance}
 ///     \cgalParamDescription{largest gap closed by stitching, model units}
 ///     \cgalParamType{double}
-///     \cgalParamDefault{derived from the local border edge lengths (see `stitch_gaps`)}
+///     \cgalParamDefault{derived from the local edge lengths, moves bounded (see `stitch_gaps`)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{relative_tolerance}
 ///     \cgalParamDescription{the stitching tolerance as a fraction of the bounding-box diagonal

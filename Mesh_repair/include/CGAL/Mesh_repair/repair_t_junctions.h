@@ -27,7 +27,7 @@ namespace Mesh_repair {
 ///   \cgalParamNBegin{merge_tolerance}
 ///     \cgalParamDescription{largest distance from a node to the edge it is inserted into}
 ///     \cgalParamType{double}
-///     \cgalParamDefault{derived per node: half its shortest incident border edge, and at most
+///     \cgalParamDefault{derived per node: half its shortest incident edge, and at most
 ///                       half the length of the edge hit}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{relative_tolerance}

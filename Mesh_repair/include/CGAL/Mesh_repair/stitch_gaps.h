@@ -40,8 +40,9 @@ namespace Mesh_repair {
 ///   \cgalParamNBegin{merge_tolerance}
 ///     \cgalParamDescription{largest distance between merged nodes, in model units}
 ///     \cgalParamType{double}
-///     \cgalParamDefault{derived per node: half its shortest incident border edge; the pair
-///                       tolerance is the smaller of the two nodes' (reported in the result)}
+///     \cgalParamDefault{derived per node: half its shortest incident edge; the pair
+///                       tolerance is the smaller of the two nodes', and no input vertex moves
+///                       farther than half its shortest incident edge (reported in the result)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{relative_tolerance}
 ///     \cgalParamDescription{the tolerance as a fraction of the bounding-box diagonal; used when

@@ -12,7 +12,7 @@ namespace Mesh_repair {
 
 /// What `stitch_gaps()` and `repair_t_junctions()` found and changed.
 struct Stitch_result {
-  /// Merge tolerance used: the value given, or, when derived from the local border edge lengths,
+  /// Merge tolerance used: the value given, or, when derived from the local edge lengths,
   /// the largest local tolerance (see `min_local_tolerance`).
   double merge_tolerance = 0;
   bool tolerance_derived = false;  ///< true when no tolerance was given
@@ -24,14 +24,20 @@ struct Stitch_result {
   std::size_t node_merges = 0;                ///< node pairs (or clusters) merged within tolerance
   std::size_t rejected_same_face = 0;         ///< pairs refused: two nodes of one face
   std::size_t rejected_too_far = 0;           ///< pairs refused: cluster would exceed tolerance
-  std::size_t t_junctions_split = 0;          ///< nodes inserted into border edges (thesis 4.3)
-  std::size_t tangent_plane_merges = 0;       ///< merge points on the tangent-plane line
-  std::size_t midpoint_merges = 0;            ///< merge points at the midpoint (fallback)
-  std::size_t edges_stitched = 0;             ///< border edge pairs glued after merging
-  std::size_t unstitched_clusters = 0;        ///< merged nodes whose borders could not be glued
-  double max_displacement = 0;                ///< largest vertex move
-  bool cancelled = false;                     ///< the visitor asked to stop
-  bool valid = true;                          ///< `is_valid_polygon_mesh` after the call
+  std::size_t t_junctions_split = 0;  ///< nodes inserted into border edges and kept (thesis 4.3)
+  std::size_t t_junction_splits_undone = 0;     ///< inserted nodes removed again: glued to nothing
+  std::size_t tangent_plane_merges = 0;         ///< merge points on the tangent-plane line
+  std::size_t midpoint_merges = 0;              ///< merge points at the midpoint (fallback)
+  std::size_t edges_stitched = 0;               ///< border edge pairs glued after merging
+  std::size_t unstitched_clusters = 0;          ///< merged nodes whose borders could not be glued
+  std::size_t unglued_nodes_restored = 0;       ///< of those, nodes put back where they were
+  std::size_t merges_undone_by_move_limit = 0;  ///< clusters whose merge point was too far
+  double max_displacement = 0;                  ///< largest vertex move
+  /// Largest move of an input vertex divided by its shortest incident edge (at most
+  /// `default_tolerance_fraction`, 0.5, with a derived tolerance).
+  double max_move_to_shortest_edge = 0;
+  bool cancelled = false;  ///< the visitor asked to stop
+  bool valid = true;       ///< `is_valid_polygon_mesh` after the call
 };
 
 inline void write_json(Json_writer& json, const Stitch_result& r) {
@@ -47,11 +53,15 @@ inline void write_json(Json_writer& json, const Stitch_result& r) {
       .field("rejected_same_face", r.rejected_same_face)
       .field("rejected_too_far", r.rejected_too_far)
       .field("t_junctions_split", r.t_junctions_split)
+      .field("t_junction_splits_undone", r.t_junction_splits_undone)
       .field("tangent_plane_merges", r.tangent_plane_merges)
       .field("midpoint_merges", r.midpoint_merges)
       .field("edges_stitched", r.edges_stitched)
       .field("unstitched_clusters", r.unstitched_clusters)
+      .field("unglued_nodes_restored", r.unglued_nodes_restored)
+      .field("merges_undone_by_move_limit", r.merges_undone_by_move_limit)
       .field("max_displacement", r.max_displacement)
+      .field("max_move_to_shortest_edge", r.max_move_to_shortest_edge)
       .field("cancelled", r.cancelled)
       .field("valid", r.valid)
       .end_object();

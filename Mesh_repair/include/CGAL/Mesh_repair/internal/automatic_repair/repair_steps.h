@@ -143,84 +143,182 @@ inline Stitch_settings stitch_settings(const Repair_options& options, double tol
   return settings;
 }
 
-/// Stitches gaps then T-junctions with `tolerance` (negative: derived from the border edge
-/// lengths by stitch_gaps); returns how many nodes were merged or inserted.
+/// Stitches gaps then T-junctions with `tolerance` (negative: derived from the local edge
+/// lengths by stitch_gaps), leaving `frozen` vertices alone.
 template <class PolygonMesh, class VertexPointMap, class GeomTraits>
-std::pair<Stitch_result, Stitch_result> stitch_with_tolerance(PolygonMesh& pm, VertexPointMap vpm,
-                                                              const GeomTraits& traits,
-                                                              const Repair_options& options,
-                                                              double tolerance,
-                                                              Any_visitor visitor) {
+std::pair<Stitch_result, Stitch_result> stitch_with_tolerance(
+    PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits, const Repair_options& options,
+    double tolerance, const Vertex_list<PolygonMesh>& frozen, Any_visitor visitor) {
   std::pair<Stitch_result, Stitch_result> r;
-  r.first = run_gap_stitcher(pm, vpm, traits, stitch_settings(options, tolerance, true), visitor);
+  r.first =
+      run_gap_stitcher(pm, vpm, traits, stitch_settings(options, tolerance, true), visitor, frozen);
   if (r.first.cancelled) return r;
-  r.second = run_gap_stitcher(pm, vpm, traits, stitch_settings(options, tolerance, false), visitor);
+  r.second = run_gap_stitcher(pm, vpm, traits, stitch_settings(options, tolerance, false), visitor,
+                              frozen);
   return r;
 }
 
-/// Tolerance stitching moves border nodes by up to the tolerance; on coarse CAD meshes, whose
-/// long border edges give a large derived tolerance, that can push faces through their
-/// neighbours (libcgal-demo's ALSTOM_TEST4: 518 new self-intersecting pairs). So when
-/// self-intersections are checked, stitching is first tried on a copy: a tolerance that adds
-/// self-intersections is replaced by a quarter of the smallest local one, and if that still
-/// adds some, tolerance stitching is skipped (the gaps stay as holes for the filling step).
-/// Returns the tolerance to use (negative: derived) or NaN to skip.
+/// What tolerance stitching will do: the tolerance (negative: derived; NaN: skip the step) and
+/// the vertices it must leave alone.
+template <class PolygonMesh>
+struct Stitching_plan {
+  double tolerance = -1;
+  Vertex_list<PolygonMesh> frozen;
+};
+
+/// Stitches a copy of `pm` as planned; returns the stitching results and, in `intersecting`, the
+/// vertices of `pm` (frozen ones excluded) of the faces that intersect afterwards.
 template <class PolygonMesh, class VertexPointMap, class GeomTraits>
-double safe_stitching_tolerance(const PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
-                                const Repair_options& options, Repair_result& result,
-                                Any_visitor visitor) {
-  if (!options.detect_self_intersections) return options.merge_tolerance;
-  Step_timer timer(result, "stitching trial", visitor);
+std::pair<Stitch_result, Stitch_result> stitch_a_copy(const PolygonMesh& pm, VertexPointMap vpm,
+                                                      const GeomTraits& traits,
+                                                      const Repair_options& options,
+                                                      const Stitching_plan<PolygonMesh>& plan,
+                                                      std::size_t& pairs,
+                                                      Vertex_list<PolygonMesh>& intersecting) {
+  using vertex_descriptor = typename boost::graph_traits<PolygonMesh>::vertex_descriptor;
+  using face_descriptor = typename boost::graph_traits<PolygonMesh>::face_descriptor;
+  PolygonMesh trial;
+  std::vector<std::pair<vertex_descriptor, vertex_descriptor>> copies;  // (original, copy)
+  CGAL::copy_face_graph(pm, trial,
+                        parameters::vertex_point_map(vpm).vertex_to_vertex_output_iterator(
+                            std::back_inserter(copies)));
+  const std::set<vertex_descriptor> frozen(plan.frozen.begin(), plan.frozen.end());
+  auto original = get(CGAL::dynamic_vertex_property_t<vertex_descriptor>(), trial);
+  for (vertex_descriptor v : vertices(trial))
+    put(original, v, boost::graph_traits<PolygonMesh>::null_vertex());
+  Vertex_list<PolygonMesh> frozen_copies;
+  for (const auto& [v, copy] : copies) {
+    put(original, copy, v);
+    if (frozen.count(v)) frozen_copies.push_back(copy);
+  }
   Default_visitor quiet;
-  double tolerance = options.merge_tolerance;
-  for (int attempt = 0; attempt < 2; ++attempt) {
-    PolygonMesh trial;
-    CGAL::copy_face_graph(pm, trial, parameters::vertex_point_map(vpm));
-    const auto stitched = stitch_with_tolerance(trial, get(CGAL::vertex_point, trial), traits,
-                                                options, tolerance, Any_visitor(quiet));
-    const std::size_t changes = stitched.first.node_merges + stitched.first.t_junctions_split +
-                                stitched.second.t_junctions_split;
-    const std::size_t pairs = changes == 0 ? 0 : count_self_intersections(trial);
-    timer.count("tolerance_" + std::to_string(attempt), stitched.first.merge_tolerance);
-    timer.count("added_self_intersections_" + std::to_string(attempt),
-                pairs > result.self_intersections_input
-                    ? double(pairs - result.self_intersections_input)
-                    : 0.0);
-    if (changes == 0 || pairs <= result.self_intersections_input) return tolerance;
+  const auto stitched =
+      stitch_with_tolerance(trial, get(CGAL::vertex_point, trial), traits, options, plan.tolerance,
+                            frozen_copies, Any_visitor(quiet));
+  const std::size_t changes = stitched.first.node_merges + stitched.first.t_junctions_split +
+                              stitched.second.t_junctions_split;
+  pairs = 0;
+  intersecting.clear();
+  if (changes == 0) return stitched;
+  std::vector<std::pair<face_descriptor, face_descriptor>> found;
+  CGAL::Polygon_mesh_processing::self_intersections(trial, std::back_inserter(found));
+  pairs = found.size();
+  std::set<vertex_descriptor> seen;
+  for (const auto& [f, g] : found)
+    for (face_descriptor face : {f, g})
+      for (vertex_descriptor w : vertices_around_face(halfedge(face, trial), trial)) {
+        const vertex_descriptor v = get(original, w);  // null: a T-junction node of the copy
+        if (v != boost::graph_traits<PolygonMesh>::null_vertex() && !frozen.count(v) &&
+            seen.insert(v).second)
+          intersecting.push_back(v);
+      }
+  return stitched;
+}
+
+/// Tolerance stitching moves border nodes; on coarse CAD meshes, whose long border edges give a
+/// large derived tolerance, and next to thin walls, that can push faces through their
+/// neighbours (libcgal-demo's ALSTOM_TEST4: 518 new self-intersecting pairs). So when
+/// self-intersections are checked, stitching is first tried on a copy. While it adds
+/// self-intersections, the vertices of the intersecting faces are frozen (they neither move nor
+/// take T-junction nodes) and the copy is stitched again, up to `max_freezing_rounds` times:
+/// the rest of the seam is still stitched with the derived tolerance. Failing that, a quarter of
+/// the smallest local tolerance is tried, and then the step is skipped (the gaps stay as holes
+/// for the filling step).
+template <class PolygonMesh, class VertexPointMap, class GeomTraits>
+Stitching_plan<PolygonMesh> plan_stitching(const PolygonMesh& pm, VertexPointMap vpm,
+                                           const GeomTraits& traits, const Repair_options& options,
+                                           Repair_result& result, Any_visitor visitor) {
+  constexpr int max_freezing_rounds = 4;
+  Stitching_plan<PolygonMesh> plan;
+  plan.tolerance = options.merge_tolerance;
+  if (!options.detect_self_intersections) return plan;
+  Step_timer timer(result, "stitching trial", visitor);
+  Vertex_list<PolygonMesh> intersecting;
+  for (int attempt = 0; attempt <= max_freezing_rounds + 1; ++attempt) {
+    std::size_t pairs = 0;
+    const auto stitched = stitch_a_copy(pm, vpm, traits, options, plan, pairs, intersecting);
+    const std::size_t added =
+        pairs > result.self_intersections_input ? pairs - result.self_intersections_input : 0;
+    const std::string suffix = "_" + std::to_string(attempt);
+    timer.count("tolerance" + suffix, stitched.first.merge_tolerance);
+    timer.count("frozen_vertices" + suffix, double(plan.frozen.size()));
+    timer.count("added_self_intersections" + suffix, double(added));
+    if (added == 0) return plan;
     timer.step().notes.push_back(
-        "merge tolerance " + std::to_string(stitched.first.merge_tolerance) + " would add " +
-        std::to_string(pairs - result.self_intersections_input) + " self-intersecting pair(s)");
-    tolerance = 0.25 * std::min(stitched.first.min_local_tolerance, stitched.first.merge_tolerance);
+        "stitching with tolerance " + std::to_string(stitched.first.merge_tolerance) + " and " +
+        std::to_string(plan.frozen.size()) + " frozen vertices would add " + std::to_string(added) +
+        " self-intersecting pair(s)");
+    if (attempt < max_freezing_rounds && !intersecting.empty()) {
+      plan.frozen.insert(plan.frozen.end(), intersecting.begin(), intersecting.end());
+    } else if (attempt <= max_freezing_rounds) {
+      plan.frozen.clear();
+      plan.tolerance =
+          0.25 * std::min(stitched.first.min_local_tolerance, stitched.first.merge_tolerance);
+      attempt = max_freezing_rounds;  // the next attempt is the last
+    } else {
+      break;
+    }
   }
   timer.count("skipped", 1);
   timer.step().notes.push_back(
       "tolerance stitching skipped: every tried tolerance added self-intersections; the gaps are "
       "left to hole filling");
-  return std::numeric_limits<double>::quiet_NaN();
+  plan.tolerance = std::numeric_limits<double>::quiet_NaN();
+  return plan;
+}
+
+/// How the merge tolerance of a stitching run was obtained, for the report.
+inline std::string tolerance_derivation(const Stitch_result& r, bool from_trial) {
+  std::ostringstream out;
+  if (from_trial)
+    out << "merge tolerance " << r.merge_tolerance
+        << ": a quarter of the smallest derived local tolerance, since the derived tolerance "
+           "would add self-intersections (stitching trial)";
+  else if (r.tolerance_derived)
+    out << "merge tolerance derived per border vertex: half its shortest incident edge (from "
+        << r.min_local_tolerance << " to " << r.merge_tolerance << ")";
+  else
+    out << "merge tolerance " << r.merge_tolerance << " as given";
+  out << "; largest move " << r.max_displacement << " (" << r.max_move_to_shortest_edge
+      << " of the vertex's shortest incident edge)";
+  return out.str();
 }
 
 template <class PolygonMesh, class VertexPointMap, class GeomTraits>
 void step_tolerance_stitching(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
                               const Repair_options& options, Any_visitor visitor,
                               Repair_result& result) {
-  const double tolerance = safe_stitching_tolerance(pm, vpm, traits, options, result, visitor);
+  const Stitching_plan<PolygonMesh> plan =
+      plan_stitching(pm, vpm, traits, options, result, visitor);
+  const double tolerance = plan.tolerance;
   if (std::isnan(tolerance)) return;
   {
     Step_timer timer(result, "tolerance stitching", visitor);
-    const Stitch_result stitched =
-        run_gap_stitcher(pm, vpm, traits, stitch_settings(options, tolerance, true), visitor);
+    const Stitch_result stitched = run_gap_stitcher(
+        pm, vpm, traits, stitch_settings(options, tolerance, true), visitor, plan.frozen);
+    timer.count("frozen_vertices", double(plan.frozen.size()));
     timer.count("node_merges", double(stitched.node_merges));
     timer.count("t_junctions_split", double(stitched.t_junctions_split));
     timer.count("edges_stitched", double(stitched.edges_stitched));
     timer.count("merge_tolerance", stitched.merge_tolerance);
     timer.count("max_displacement", stitched.max_displacement);
+    timer.count("max_move_to_shortest_edge", stitched.max_move_to_shortest_edge);
+    timer.count("merges_undone_by_move_limit", double(stitched.merges_undone_by_move_limit));
+    timer.count("unglued_nodes_restored", double(stitched.unglued_nodes_restored));
+    timer.count("t_junction_splits_undone", double(stitched.t_junction_splits_undone));
+    const bool from_trial = options.merge_tolerance < 0 && tolerance >= 0;
+    timer.step().notes.push_back(tolerance_derivation(stitched, from_trial));
+    if (!plan.frozen.empty())
+      timer.step().notes.push_back(std::to_string(plan.frozen.size()) +
+                                   " vertices left unstitched: stitching them made faces "
+                                   "intersect (stitching trial)");
     timer.details(stitched);
     if (stitched.cancelled) result.cancelled = true;
   }
   if (result.cancelled) return;
   Step_timer timer(result, "T-junctions", visitor);
-  const Stitch_result repaired =
-      run_gap_stitcher(pm, vpm, traits, stitch_settings(options, tolerance, false), visitor);
+  const Stitch_result repaired = run_gap_stitcher(
+      pm, vpm, traits, stitch_settings(options, tolerance, false), visitor, plan.frozen);
   timer.count("t_junctions_split", double(repaired.t_junctions_split));
   timer.count("edges_stitched", double(repaired.edges_stitched));
   timer.details(repaired);
@@ -568,6 +666,22 @@ void step_verify(const PolygonMesh& pm, const Repair_options& options, Repair_re
   result.manifold = non_manifold.empty();
   result.border_cycles_left = border_cycles(pm).size();
   result.closed = result.border_cycles_left == 0;
+  if (result.closed && result.holes.failed > 0) {
+    // A later step closed them: the self-intersection removal replaces whole regions, holes
+    // included. The report must say what the written mesh shows.
+    for (Hole_fill_report& hole : result.holes.holes) {
+      if (hole.filled || hole.failure.empty()) continue;
+      hole.notes.push_back(
+          "closed by the self-intersection removal, which replaced the region "
+          "around it (before: " +
+          hole.failure + ")");
+      hole.failure.clear();
+      hole.filled = true;
+    }
+    timer.count("failed_holes_closed_later", double(result.holes.failed));
+    result.holes.filled += result.holes.failed;
+    result.holes.failed = 0;
+  }
   if (options.detect_self_intersections) {
     result.self_intersections_output = count_self_intersections(pm);
     result.self_intersections_checked = true;

@@ -46,8 +46,10 @@ namespace Mesh_repair {
 namespace internal {
 
 struct Stitch_settings {
-  double merge_tolerance = -1;  ///< absolute; negative: derived from local border edge lengths
-  double default_tolerance_fraction = 0.5;  ///< of the shortest incident border edge
+  double merge_tolerance = -1;  ///< absolute; negative: derived from local edge lengths
+  /// Derived tolerance of a border vertex, and the most it may move: this fraction of its
+  /// shortest incident edge (border or not).
+  double default_tolerance_fraction = 0.5;
   bool merge_nodes = true;  ///< node pairs within tolerance (4.2); false: exactly coincident only
   bool repair_t_junctions = true;  ///< node insertion into edges (thesis 4.3)
   bool use_cubic_curves = true;    ///< T-junction nodes on the boundary curve (4.3.1)
@@ -64,16 +66,25 @@ class Gap_stitcher {
   using Vector = typename GeomTraits::Vector_3;
   using Node_id_map =
       typename boost::property_map<PolygonMesh, CGAL::dynamic_vertex_property_t<std::size_t>>::type;
+  // char, not bool: see t_junction_pass().
+  using Frozen_map =
+      typename boost::property_map<PolygonMesh, CGAL::dynamic_vertex_property_t<char>>::type;
   static constexpr std::size_t no_node = 0;  // node ids are stored +1 so 0 means "not a node"
 
  public:
+  /// `frozen`: vertices that must neither move nor take a T-junction node on their edges (the
+  /// automatic repair's stitching trial freezes those whose stitching made faces intersect).
   Gap_stitcher(PolygonMesh& pm, VertexPointMap vpm, const Stitch_settings& settings,
-               Visitor& visitor)
+               Visitor& visitor, const std::vector<vertex_descriptor>& frozen = {})
       : pm_(pm),
         vpm_(vpm),
         settings_(settings),
         visitor_(visitor),
-        node_of_(get(CGAL::dynamic_vertex_property_t<std::size_t>(), pm)) {}
+        node_of_(get(CGAL::dynamic_vertex_property_t<std::size_t>(), pm)),
+        frozen_(get(CGAL::dynamic_vertex_property_t<char>(), pm)) {
+    for (vertex_descriptor v : vertices(pm_)) put(frozen_, v, 0);
+    for (vertex_descriptor v : frozen) put(frozen_, v, 1);
+  }
 
   Stitch_result run() {
     result_.border_edges_before = count_border_edges();
@@ -120,11 +131,15 @@ class Gap_stitcher {
 
   std::size_t node(vertex_descriptor v) const { return get(node_of_, v); }
 
-  std::size_t add_node(vertex_descriptor v, const Vec3& normal, double tolerance) {
+  /// `shortest_edge`: of the input vertex, for its move bound; infinite for a vertex created
+  /// here (a T-junction node), which has no input position to keep.
+  std::size_t add_node(vertex_descriptor v, const Vec3& normal, double tolerance,
+                       double shortest_edge) {
     node_vertex_.push_back(v);
     node_original_.push_back(position(v));
     node_normal_.push_back(normal);
     node_tolerance_.push_back(tolerance);
+    node_shortest_edge_.push_back(shortest_edge);
     parent_.push_back(node_vertex_.size() - 1);
     next_member_.push_back(no_member);
     last_member_.push_back(node_vertex_.size() - 1);
@@ -228,6 +243,7 @@ class Gap_stitcher {
     node_original_.clear();
     node_normal_.clear();
     node_tolerance_.clear();
+    node_shortest_edge_.clear();
     placed_.clear();
     placed_on_planes_.clear();
     coincident_possible_ = false;
@@ -250,20 +266,15 @@ class Gap_stitcher {
     visitor_.start_step("border nodes");
     std::vector<unsigned char> ends_border;
     const bool derived = settings_.merge_tolerance < 0;
-    const double infinity = std::numeric_limits<double>::infinity();
     for (halfedge_descriptor h : halfedges(pm_)) {
       if (!is_border(h, pm_)) continue;
-      const vertex_descriptor a = source(h, pm_), b = target(h, pm_);
-      const double local = settings_.default_tolerance_fraction * norm(position(a) - position(b));
-      for (vertex_descriptor v : {a, b}) {
-        if (node(v) == no_node) {
-          add_node(v, node_normal(v), derived ? infinity : settings_.merge_tolerance);
-          ends_border.push_back(0);
-        }
-        if (derived) {
-          double& tolerance = node_tolerance_[node(v) - 1];
-          tolerance = std::min(tolerance, local);
-        }
+      for (vertex_descriptor v : {source(h, pm_), target(h, pm_)}) {
+        if (node(v) != no_node) continue;
+        const double shortest = shortest_incident_edge(v);
+        const double tolerance =
+            derived ? settings_.default_tolerance_fraction * shortest : settings_.merge_tolerance;
+        add_node(v, node_normal(v), get(frozen_, v) ? 0.0 : tolerance, shortest);
+        ends_border.push_back(0);
       }
       if (!coincident_possible_ && unusual_border_halfedge(h, ends_border))
         coincident_possible_ = true;
@@ -347,12 +358,18 @@ class Gap_stitcher {
           tolerance = std::min(tolerance, node_tolerance_[id]);
         }
         bool used_planes = false;
-        const Vec3 target = merge_point(merge_nodes, tolerance, &used_planes);
-        for (std::size_t id = r; id != no_member; id = next_member_[id]) {
-          put(vpm_, node_vertex_[id], Point(target[0], target[1], target[2]));
-          result_.max_displacement =
-              std::max(result_.max_displacement, norm(node_original_[id] - target));
+        Vec3 target = merge_point(merge_nodes, tolerance, &used_planes);
+        if (used_planes && !within_move_limits(r, target)) {
+          target = merge_point(merge_nodes, 0.0, nullptr);  // the centroid
+          used_planes = false;
         }
+        if (!within_move_limits(r, target)) {
+          dissolve(r);
+          ++result_.merges_undone_by_move_limit;
+          continue;
+        }
+        for (std::size_t id = r; id != no_member; id = next_member_[id])
+          put(vpm_, node_vertex_[id], Point(target[0], target[1], target[2]));
         placed_[r] = true;
         placed_on_planes_[r] = used_planes;
       }
@@ -432,7 +449,7 @@ class Gap_stitcher {
       const halfedge_descriptor h = border[edge_box.info()];
       const vertex_descriptor v = node_vertex_[id];
       const vertex_descriptor a = source(h, pm_), b = target(h, pm_);
-      if (v == a || v == b) return;
+      if (v == a || v == b || get(frozen_, a) || get(frozen_, b)) return;
       const Vec3 pa = position(a), pb = position(b), pv = position(v);
       const Vec3 ab = pb - pa;
       const double length2 = dot(ab, ab);
@@ -534,7 +551,8 @@ class Gap_stitcher {
       const vertex_descriptor created = target(to_new, pm_);
       put(vpm_, created, Point(point[0], point[1], point[2]));
       CGAL::Euler::split_face(to_new, next(inner, pm_), pm_);
-      const std::size_t new_id = add_node(created, face_normal, node_tolerance_[id]);
+      const std::size_t new_id = add_node(created, face_normal, node_tolerance_[id],
+                                          std::numeric_limits<double>::infinity());
       unite(root(id), new_id);
     }
     return accepted.size();
@@ -614,14 +632,18 @@ class Gap_stitcher {
   void stitch_clusters() {
     visitor_.start_step("stitch merged nodes");
     const Halfedge_pairs to_stitch = matching_border_pairs_cached();
-    count_unstitched_clusters(to_stitch);
+    restore_unglued_nodes(to_stitch);
+    measure_moves();
     result_.edges_stitched = glue_border_halfedge_pairs(pm_, to_stitch);
     visitor_.end_step("stitch merged nodes");
   }
 
-  /// Clusters whose nodes are not all joined by the glued edges stay separate vertices (at the
-  /// same place): a touching point, not a seam.
-  void count_unstitched_clusters(const Halfedge_pairs& to_stitch) {
+  /// A clustered node that no glued edge joins to another stays a separate vertex: left at
+  /// the merge point it would sit on another vertex without being one (a new gap, and a
+  /// coincident pair any point-merging reader would see), so it goes back to where it was, and
+  /// a T-junction node glued to nothing is removed again. Its cluster is counted as
+  /// unstitched: a touching point, not a seam.
+  void restore_unglued_nodes(const Halfedge_pairs& to_stitch) {
     std::vector<std::size_t> glued(node_vertex_.size());
     for (std::size_t id = 0; id < glued.size(); ++id) glued[id] = id;
     auto find = [&](std::size_t id) {
@@ -635,14 +657,97 @@ class Gap_stitcher {
       join(source(h1, pm_), target(h2, pm_));
       join(target(h1, pm_), source(h2, pm_));
     }
+    std::vector<std::size_t> group_size(glued.size(), 0);
+    for (std::size_t id = 0; id < glued.size(); ++id) ++group_size[find(id)];
     for (std::size_t r : cluster_roots()) {
+      bool unstitched = false;
       for (std::size_t id = r; id != no_member; id = next_member_[id]) {
-        if (find(id) != find(r)) {
-          ++result_.unstitched_clusters;
-          break;
-        }
+        unstitched = unstitched || find(id) != find(r);
+        if (group_size[find(id)] > 1 || position(node_vertex_[id]) == node_original_[id]) continue;
+        const Vec3& p = node_original_[id];
+        put(vpm_, node_vertex_[id], Point(p[0], p[1], p[2]));
+        ++result_.unglued_nodes_restored;
       }
+      if (unstitched) ++result_.unstitched_clusters;
     }
+    // Latest first: a later split may sit on an edge of an earlier one.
+    for (std::size_t id = node_vertex_.size(); id-- > 0;) {
+      if (!created_node(id) || group_size[find(id)] > 1) continue;
+      if (!undo_t_junction_split(node_vertex_[id])) continue;
+      node_vertex_[id] = boost::graph_traits<PolygonMesh>::null_vertex();
+      --result_.t_junctions_split;
+      ++result_.t_junction_splits_undone;
+    }
+  }
+
+  bool created_node(std::size_t id) const {
+    return node_shortest_edge_[id] == std::numeric_limits<double>::infinity();
+  }
+
+  /// Undoes split_border_edge for node `c` (an edge split, then a face split): joins the two
+  /// faces at its interior edge, then joins it into an end of the split edge.
+  bool undo_t_junction_split(vertex_descriptor c) {
+    halfedge_descriptor interior = boost::graph_traits<PolygonMesh>::null_halfedge();
+    halfedge_descriptor to_end = interior;
+    std::size_t degree = 0;
+    for (halfedge_descriptor h : halfedges_around_target(c, pm_)) {
+      ++degree;
+      if (!CGAL::is_border_edge(h, pm_))
+        interior = h;
+      else
+        to_end = opposite(h, pm_);
+    }
+    if (degree != 3 || interior == boost::graph_traits<PolygonMesh>::null_halfedge() ||
+        to_end == boost::graph_traits<PolygonMesh>::null_halfedge())
+      return false;
+    CGAL::Euler::join_face(interior, pm_);
+    CGAL::Euler::join_vertex(to_end, pm_);
+    return true;
+  }
+
+  /// The largest move of a vertex, absolute and relative to its shortest incident edge.
+  void measure_moves() {
+    for (std::size_t id = 0; id < node_vertex_.size(); ++id) {
+      if (node_vertex_[id] == boost::graph_traits<PolygonMesh>::null_vertex()) continue;
+      const double move = norm(position(node_vertex_[id]) - node_original_[id]);
+      result_.max_displacement = std::max(result_.max_displacement, move);
+      if (move > 0 && node_shortest_edge_[id] < std::numeric_limits<double>::infinity())
+        result_.max_move_to_shortest_edge =
+            std::max(result_.max_move_to_shortest_edge, move / node_shortest_edge_[id]);
+    }
+  }
+
+  double shortest_incident_edge(vertex_descriptor v) const {
+    double shortest = std::numeric_limits<double>::infinity();
+    const Vec3 p = position(v);
+    for (halfedge_descriptor h : halfedges_around_target(v, pm_))
+      shortest = std::min(shortest, norm(position(source(h, pm_)) - p));
+    return shortest;
+  }
+
+  /// With a derived tolerance no input vertex moves farther than the tolerance fraction of its
+  /// shortest incident edge (a given tolerance is the user's bound).
+  bool within_move_limits(std::size_t r, const Vec3& target) const {
+    if (settings_.merge_tolerance >= 0) return true;
+    for (std::size_t id = r; id != no_member; id = next_member_[id])
+      if (norm(node_original_[id] - target) >
+          settings_.default_tolerance_fraction * node_shortest_edge_[id])
+        return false;
+    return true;
+  }
+
+  /// The nodes of cluster `r` become single nodes again, back at their original positions.
+  void dissolve(std::size_t r) {
+    for (std::size_t id = r, next; id != no_member; id = next) {
+      next = next_member_[id];
+      const Vec3& p = node_original_[id];
+      put(vpm_, node_vertex_[id], Point(p[0], p[1], p[2]));
+      parent_[id] = last_member_[id] = id;
+      next_member_[id] = no_member;
+      cluster_size_[id] = 1;
+      placed_[id] = false;
+    }
+    matching_pairs_valid_ = false;
   }
 
   std::size_t count_border_edges() const {
@@ -662,9 +767,11 @@ class Gap_stitcher {
   Stitch_settings settings_;
   Visitor& visitor_;
   Node_id_map node_of_;
+  Frozen_map frozen_;
   std::vector<vertex_descriptor> node_vertex_;
   std::vector<Vec3> node_original_, node_normal_;
   std::vector<double> node_tolerance_;
+  std::vector<double> node_shortest_edge_;  // at collection; infinite for created nodes
   static constexpr std::size_t no_member = std::numeric_limits<std::size_t>::max();
   std::vector<std::size_t> parent_;
   std::vector<std::size_t> next_member_;  // the cluster of a root, as a list from the root

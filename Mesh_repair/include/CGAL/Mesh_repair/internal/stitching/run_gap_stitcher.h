@@ -13,6 +13,7 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <cmath>
+#include <vector>
 
 namespace CGAL {
 namespace Mesh_repair {
@@ -47,12 +48,17 @@ double absolute_tolerance(const PolygonMesh& pm, const NamedParameters& np) {
   return relative * std::sqrt(dx * dx + dy * dy + dz * dz);
 }
 
-/// `stitch_gaps` / `repair_t_junctions` on plain settings (compiled once per mesh type).
+template <class PolygonMesh>
+using Vertex_list = std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor>;
+
+/// `stitch_gaps` / `repair_t_junctions` on plain settings (compiled once per mesh type);
+/// `frozen` vertices neither move nor take T-junction nodes (see `Gap_stitcher`).
 template <class PolygonMesh, class VertexPointMap, class GeomTraits>
 Stitch_result run_gap_stitcher(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits&,
-                               const Stitch_settings& settings, Any_visitor visitor) {
+                               const Stitch_settings& settings, Any_visitor visitor,
+                               const Vertex_list<PolygonMesh>& frozen = {}) {
   Gap_stitcher<PolygonMesh, VertexPointMap, GeomTraits, Any_visitor> stitcher(pm, vpm, settings,
-                                                                              visitor);
+                                                                              visitor, frozen);
   Stitch_result result = stitcher.run();
   result.valid = CGAL::is_valid_polygon_mesh(pm);
   return result;
@@ -88,7 +94,8 @@ extern
 #endif
     template Stitch_result
     run_gap_stitcher<Core_mesh, Core_vpm, Core_traits>(Core_mesh&, Core_vpm, const Core_traits&,
-                                                       const Stitch_settings&, Any_visitor);
+                                                       const Stitch_settings&, Any_visitor,
+                                                       const Vertex_list<Core_mesh>&);
 }  // namespace internal
 }  // namespace Mesh_repair
 }  // namespace CGAL
