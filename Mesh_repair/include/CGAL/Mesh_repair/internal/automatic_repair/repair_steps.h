@@ -59,9 +59,9 @@ constexpr int max_hole_growth_rings = 3;
 /// Holes with more border edges are not grown: growing is for the small holes of scanned
 /// borders, and Liepa's triangulation of a long border is cubic in its length.
 constexpr std::size_t max_grown_hole_edges = 300;
-/// Self-intersecting faces are removed with 1, then 2 vertex rings
+/// Self-intersecting faces are removed with 1, 2, ... up to 6 vertex rings
 /// (step_remove_self_intersections).
-constexpr int max_self_intersection_rings = 2;
+constexpr int max_self_intersection_rings = 6;
 /// Past this fraction of the faces, self-intersecting faces are not removed: the mesh is not a
 /// surface with local defects, and replacing most of it would lose its shape.
 constexpr double max_self_intersecting_face_fraction = 0.2;
@@ -307,7 +307,8 @@ void step_tolerance_stitching(PolygonMesh& pm, VertexPointMap vpm, const GeomTra
     timer.count("unglued_nodes_restored", double(stitched.unglued_nodes_restored));
     timer.count("t_junction_splits_undone", double(stitched.t_junction_splits_undone));
     const bool from_trial = options.merge_tolerance < 0 && tolerance >= 0;
-    timer.step().notes.push_back(tolerance_derivation(stitched, from_trial));
+    if (stitched.border_nodes > 0)
+      timer.step().notes.push_back(tolerance_derivation(stitched, from_trial));
     if (!plan.frozen.empty())
       timer.step().notes.push_back(std::to_string(plan.frozen.size()) +
                                    " vertices left unstitched: stitching them made faces "
