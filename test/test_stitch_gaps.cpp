@@ -294,6 +294,23 @@ TEST(StitchGaps, ANodePairThatGluesNoEdgeStaysWhereItWas) {
     EXPECT_EQ(mesh.point(vertex_descriptor(static_cast<Mesh::size_type>(i))), soup.points[i]);
 }
 
+TEST(StitchGaps, NodesAlongOneBorderSideAreNotMergedEvenWithALargeTolerance) {
+  // One open sheet, border edges of 1, tolerance 2.5: nodes two edges apart along the border
+  // share no face and are within tolerance, but merging them would fold the border onto itself.
+  Soup soup;
+  add_grid_patch(soup, Point(0, 0, 0), Vector(8, 0, 0), Vector(0, 8, 0), 8, 8);
+  Mesh sheet = to_mesh(soup);
+  const double area_before = PMP::area(sheet);
+  const MR::Stitch_result result = MR::stitch_gaps(sheet, MR::parameters::merge_tolerance(2.5));
+  EXPECT_TRUE(result.valid);
+  EXPECT_EQ(result.node_merges, 0u);
+  EXPECT_GT(result.rejected_same_side, 0u);
+  EXPECT_EQ(result.max_displacement, 0.0);
+  EXPECT_EQ(border_cycle_count(sheet), 1u);
+  EXPECT_NEAR(PMP::area(sheet), area_before, 1e-9);
+  EXPECT_FALSE(self_intersects(sheet));
+}
+
 /// Pairs of border halfedges whose end points coincide in opposite directions, each halfedge in
 /// at most one pair (the input of a `stitch_borders(pm, pairs)` call).
 std::vector<std::pair<halfedge_descriptor, halfedge_descriptor>> coincident_border_pairs(

@@ -18,6 +18,7 @@
 // are bucketed by cluster, T-junctions found by box intersection.
 
 #include <CGAL/Mesh_repair/internal/cubic_curves.h>
+#include <CGAL/Mesh_repair/internal/hole_filling/border_cycles.h>
 #include <CGAL/Mesh_repair/internal/stitching/glue_border_pairs.h>
 #include <CGAL/Mesh_repair/internal/stitching/merge_point.h>
 #include <CGAL/Mesh_repair/internal/stitching/point_kd_tree.h>
@@ -204,8 +205,13 @@ class Gap_stitcher {
           ++result_.rejected_same_face;
           return false;
         }
-        if (norm(node_original_[x] - node_original_[y]) > pair_tolerance(x, y)) {
+        const double d = norm(node_original_[x] - node_original_[y]);
+        if (d > pair_tolerance(x, y)) {
           ++result_.rejected_too_far;
+          return false;
+        }
+        if (along_one_border_side(x, y, d)) {
+          ++result_.rejected_same_side;
           return false;
         }
       }
@@ -249,6 +255,7 @@ class Gap_stitcher {
     coincident_possible_ = false;
     matching_pairs_valid_ = false;
     result_.node_merges = result_.rejected_same_face = result_.rejected_too_far = 0;
+    result_.rejected_same_side = 0;
   }
 
   /// Whether `h` (border, from u to v) is a degenerate or a multiple edge, or v ends another
@@ -281,6 +288,7 @@ class Gap_stitcher {
     }
     result_.border_nodes = node_vertex_.size();
     result_.tolerance_derived = derived;
+    locate_nodes_on_cycles();
     if (!node_tolerance_.empty()) {
       result_.merge_tolerance = *std::max_element(node_tolerance_.begin(), node_tolerance_.end());
       result_.min_local_tolerance =
@@ -290,6 +298,38 @@ class Gap_stitcher {
           std::max(0.0, settings_.merge_tolerance);
     }
     visitor_.end_step("border nodes");
+  }
+
+  /// Each node's border cycle and arc-length position along it (the node's first cycle where
+  /// the border touches itself).
+  void locate_nodes_on_cycles() {
+    node_cycle_.assign(node_vertex_.size(), no_cycle);
+    node_arc_.assign(node_vertex_.size(), 0.0);
+    cycle_length_.clear();
+    for (halfedge_descriptor start : border_cycles(pm_)) {
+      double arc = 0;
+      for (halfedge_descriptor h : cycle_halfedges(start, pm_)) {
+        const std::size_t n = node(source(h, pm_));
+        if (n != no_node && node_cycle_[n - 1] == no_cycle) {
+          node_cycle_[n - 1] = cycle_length_.size();
+          node_arc_[n - 1] = arc;
+        }
+        arc += norm(position(target(h, pm_)) - position(source(h, pm_)));
+      }
+      cycle_length_.push_back(arc);
+    }
+  }
+
+  /// Whether nodes `i` and `j`, `d` apart, lie on one side of a gap: on one border cycle, with
+  /// the shorter way along it less than twice as long as the straight line (the border runs from
+  /// one to the other, so merging them would fold it). Across a gap, or at the tip of a slit
+  /// (a V sharper than 60 degrees), the way along the border is much longer.
+  bool along_one_border_side(std::size_t i, std::size_t j, double d) const {
+    if (i >= node_cycle_.size() || j >= node_cycle_.size()) return false;  // T-junction nodes
+    const std::size_t c = node_cycle_[i];
+    if (c == no_cycle || c != node_cycle_[j] || d == 0) return false;
+    const double along = std::abs(node_arc_[i] - node_arc_[j]);
+    return std::min(along, cycle_length_[c] - along) < 2 * d;
   }
 
   // ---- step 2: node pairs within tolerance, greedily by distance (kd-tree) -----------------
@@ -317,7 +357,10 @@ class Gap_stitcher {
         if (j <= i) return;
         const double d = norm(node_original_[i] - node_original_[j]);
         if (d == 0) coincident_possible_ = true;  // two border nodes at one point
-        if (d <= pair_tolerance(i, j))
+        if (d > pair_tolerance(i, j)) return;
+        if (along_one_border_side(i, j, d))
+          ++result_.rejected_same_side;
+        else
           candidates.push_back({d, i, j, share_face(node_vertex_[i], node_vertex_[j])});
       });
     }
@@ -463,6 +506,10 @@ class Gap_stitcher {
         tolerance = std::min(tolerance, settings_.default_tolerance_fraction * std::sqrt(length2));
       const double d = norm(pv - projection);
       if (d > tolerance || d >= best[id].distance) return;
+      const std::size_t na = node(a), nb = node(b);
+      if ((na != no_node && along_one_border_side(id, na - 1, d)) ||
+          (nb != no_node && along_one_border_side(id, nb - 1, d)))
+        return;
       best[id] = Edge_hit{d, edge_box.info(), t, projection};
     };
     CGAL::box_intersection_d(node_boxes.begin(), node_boxes.end(), edge_boxes.begin(),
@@ -631,8 +678,11 @@ class Gap_stitcher {
 
   void stitch_clusters() {
     visitor_.start_step("stitch merged nodes");
-    const Halfedge_pairs to_stitch = matching_border_pairs_cached();
-    restore_unglued_nodes(to_stitch);
+    Halfedge_pairs to_stitch = matching_border_pairs_cached();
+    // Removing an unglued T-junction node joins its halfedges into its neighbours': the pairs
+    // are found again on the mesh as it is now (gluing the earlier list there was seen to give
+    // an invalid mesh).
+    if (restore_unglued_nodes(to_stitch)) to_stitch = matching_border_pairs();
     measure_moves();
     result_.edges_stitched = glue_border_halfedge_pairs(pm_, to_stitch);
     visitor_.end_step("stitch merged nodes");
@@ -643,7 +693,8 @@ class Gap_stitcher {
   /// coincident pair any point-merging reader would see), so it goes back to where it was, and
   /// a T-junction node glued to nothing is removed again. Its cluster is counted as
   /// unstitched: a touching point, not a seam.
-  void restore_unglued_nodes(const Halfedge_pairs& to_stitch) {
+  /// Returns whether a T-junction node was removed.
+  bool restore_unglued_nodes(const Halfedge_pairs& to_stitch) {
     std::vector<std::size_t> glued(node_vertex_.size());
     for (std::size_t id = 0; id < glued.size(); ++id) glued[id] = id;
     auto find = [&](std::size_t id) {
@@ -671,13 +722,16 @@ class Gap_stitcher {
       if (unstitched) ++result_.unstitched_clusters;
     }
     // Latest first: a later split may sit on an edge of an earlier one.
+    bool removed = false;
     for (std::size_t id = node_vertex_.size(); id-- > 0;) {
       if (!created_node(id) || group_size[find(id)] > 1) continue;
       if (!undo_t_junction_split(node_vertex_[id])) continue;
       node_vertex_[id] = boost::graph_traits<PolygonMesh>::null_vertex();
       --result_.t_junctions_split;
       ++result_.t_junction_splits_undone;
+      removed = true;
     }
+    return removed;
   }
 
   bool created_node(std::size_t id) const {
@@ -700,6 +754,15 @@ class Gap_stitcher {
     if (degree != 3 || interior == boost::graph_traits<PolygonMesh>::null_halfedge() ||
         to_end == boost::graph_traits<PolygonMesh>::null_halfedge())
       return false;
+    // join_vertex needs both sides of the joined edge larger than triangles: a border cycle of
+    // three edges would become a two-edge loop.
+    const halfedge_descriptor border = is_border(to_end, pm_) ? to_end : opposite(to_end, pm_);
+    std::size_t border_size = 0;
+    for (halfedge_descriptor h : halfedges_around_face(border, pm_)) {
+      (void)h;
+      if (++border_size > 3) break;
+    }
+    if (border_size <= 3) return false;
     CGAL::Euler::join_face(interior, pm_);
     CGAL::Euler::join_vertex(to_end, pm_);
     return true;
@@ -772,6 +835,9 @@ class Gap_stitcher {
   std::vector<Vec3> node_original_, node_normal_;
   std::vector<double> node_tolerance_;
   std::vector<double> node_shortest_edge_;  // at collection; infinite for created nodes
+  static constexpr std::size_t no_cycle = std::numeric_limits<std::size_t>::max();
+  std::vector<std::size_t> node_cycle_;  // at collection (locate_nodes_on_cycles)
+  std::vector<double> node_arc_, cycle_length_;
   static constexpr std::size_t no_member = std::numeric_limits<std::size_t>::max();
   std::vector<std::size_t> parent_;
   std::vector<std::size_t> next_member_;  // the cluster of a root, as a list from the root
