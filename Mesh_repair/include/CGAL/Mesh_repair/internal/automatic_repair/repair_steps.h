@@ -204,14 +204,22 @@ std::pair<Stitch_result, Stitch_result> stitch_a_copy(const PolygonMesh& pm, Ver
   CGAL::Polygon_mesh_processing::self_intersections(trial, std::back_inserter(found));
   pairs = found.size();
   std::set<vertex_descriptor> seen;
+  auto add = [&](vertex_descriptor w) {
+    const vertex_descriptor v = get(original, w);  // null: a T-junction node of the copy
+    if (v != boost::graph_traits<PolygonMesh>::null_vertex() && !frozen.count(v) &&
+        seen.insert(v).second)
+      intersecting.push_back(v);
+  };
   for (const auto& [f, g] : found)
     for (face_descriptor face : {f, g})
-      for (vertex_descriptor w : vertices_around_face(halfedge(face, trial), trial)) {
-        const vertex_descriptor v = get(original, w);  // null: a T-junction node of the copy
-        if (v != boost::graph_traits<PolygonMesh>::null_vertex() && !frozen.count(v) &&
-            seen.insert(v).second)
-          intersecting.push_back(v);
-      }
+      for (vertex_descriptor w : vertices_around_face(halfedge(face, trial), trial)) add(w);
+  // Faces of frozen vertices and T-junction nodes only: the nodes that moved them are one ring
+  // further (a T-junction node is merged with the node that hit its edge).
+  if (intersecting.empty())
+    for (const auto& [f, g] : found)
+      for (face_descriptor face : {f, g})
+        for (vertex_descriptor w : vertices_around_face(halfedge(face, trial), trial))
+          for (vertex_descriptor u : vertices_around_target(halfedge(w, trial), trial)) add(u);
   return stitched;
 }
 
@@ -228,17 +236,20 @@ template <class PolygonMesh, class VertexPointMap, class GeomTraits>
 Stitching_plan<PolygonMesh> plan_stitching(const PolygonMesh& pm, VertexPointMap vpm,
                                            const GeomTraits& traits, const Repair_options& options,
                                            Repair_result& result, Any_visitor visitor) {
-  constexpr int max_freezing_rounds = 4;
+  constexpr int max_freezing_rounds = 8;
   Stitching_plan<PolygonMesh> plan;
   plan.tolerance = options.merge_tolerance;
   if (!options.detect_self_intersections) return plan;
   Step_timer timer(result, "stitching trial", visitor);
   Vertex_list<PolygonMesh> intersecting;
+  double smallest_local = std::numeric_limits<double>::infinity();  // before any freezing
   for (int attempt = 0; attempt <= max_freezing_rounds + 1; ++attempt) {
     std::size_t pairs = 0;
     const auto stitched = stitch_a_copy(pm, vpm, traits, options, plan, pairs, intersecting);
     const std::size_t added =
         pairs > result.self_intersections_input ? pairs - result.self_intersections_input : 0;
+    if (attempt == 0)
+      smallest_local = std::min(stitched.first.min_local_tolerance, stitched.first.merge_tolerance);
     const std::string suffix = "_" + std::to_string(attempt);
     timer.count("tolerance" + suffix, stitched.first.merge_tolerance);
     timer.count("frozen_vertices" + suffix, double(plan.frozen.size()));
@@ -252,9 +263,8 @@ Stitching_plan<PolygonMesh> plan_stitching(const PolygonMesh& pm, VertexPointMap
       plan.frozen.insert(plan.frozen.end(), intersecting.begin(), intersecting.end());
     } else if (attempt <= max_freezing_rounds) {
       plan.frozen.clear();
-      plan.tolerance =
-          0.25 * std::min(stitched.first.min_local_tolerance, stitched.first.merge_tolerance);
-      attempt = max_freezing_rounds;  // the next attempt is the last
+      plan.tolerance = 0.25 * smallest_local;  // frozen nodes (tolerance 0) left out
+      attempt = max_freezing_rounds;           // the next attempt is the last
     } else {
       break;
     }
