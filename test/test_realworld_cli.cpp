@@ -9,6 +9,7 @@
 #include "scratch_folder.h"
 #include "support/written_file_check.h"
 
+#include <array>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -194,6 +195,61 @@ TEST(RealWorld, OpenMeshesWithHoles) {
   const Repair_run flat = repair("open_sheet", sheet(6));
   EXPECT_EQ(flat.status, 3) << flat.out;
   EXPECT_EQ(flat.reading.border_cycles, 1u);
+}
+
+/// Appends an nu x nv grid of triangles over origin + s * u + t * v (s, t in [0, 1]).
+void add_grid(Soup& soup, std::array<double, 3> origin, std::array<double, 3> u,
+              std::array<double, 3> v, int nu, int nv) {
+  const std::size_t first = soup.points.size();
+  for (int j = 0; j <= nv; ++j)
+    for (int i = 0; i <= nu; ++i) {
+      const double s = double(i) / nu, t = double(j) / nv;
+      soup.points.push_back({origin[0] + s * u[0] + t * v[0], origin[1] + s * u[1] + t * v[1],
+                             origin[2] + s * u[2] + t * v[2]});
+    }
+  auto at = [&](int i, int j) { return first + std::size_t(j * (nu + 1) + i); };
+  for (int j = 0; j < nv; ++j)
+    for (int i = 0; i < nu; ++i) {
+      soup.faces.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      soup.faces.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+}
+
+/// The four side walls of the box [0, 1]^2 x [z0, z1], `n` cells along each side.
+void add_walls(Soup& soup, double z0, double z1, int n) {
+  const double h = z1 - z0;
+  add_grid(soup, {0, 0, z0}, {1, 0, 0}, {0, 0, h}, n, 2);
+  add_grid(soup, {1, 0, z0}, {0, 1, 0}, {0, 0, h}, n, 2);
+  add_grid(soup, {1, 1, z0}, {-1, 0, 0}, {0, 0, h}, n, 2);
+  add_grid(soup, {0, 1, z0}, {0, -1, 0}, {0, 0, h}, n, 2);
+}
+
+// A closed box cracked across: the two halves 0.003 apart, meshed with 7 and 11 cells per side
+// so that no node of one side meets a node of the other (T-junctions all along the crack).
+TEST(RealWorld, CrackWithTJunctionsAcrossAClosedPart) {
+  const double gap = 0.003;
+  Soup box;
+  add_grid(box, {0, 0, 0}, {0, 1, 0}, {1, 0, 0}, 7, 7);  // bottom
+  add_walls(box, 0, 0.5, 7);
+  add_walls(box, 0.5 + gap, 1 + gap, 11);
+  add_grid(box, {0, 0, 1 + gap}, {1, 0, 0}, {0, 1, 0}, 11, 11);  // top
+  const Repair_run run = repair("cracked_box", box);
+  EXPECT_EQ(run.status, 0) << run.out;
+  EXPECT_TRUE(run.reading.closed && run.reading.valid && run.reading.manifold) << run.out;
+  EXPECT_EQ(repair_member(run, "self_intersections_output"), "0") << run.report;
+}
+
+// Two closed cubes passing through each other (an assembly): both are kept as solids, their
+// intersections counted as kept between components, exit 3; nothing of either is removed.
+TEST(RealWorld, OverlappingSolidsAreKeptAsSeparateSolids) {
+  Soup solids = cube(0, 0, 0);
+  solids.add(cube(0.5, 0.4, 0.3));
+  const Repair_run run = repair("overlapping_cubes", solids);
+  EXPECT_EQ(run.status, 3) << run.out;
+  EXPECT_EQ(run.reading.faces, 24u);
+  EXPECT_TRUE(run.reading.closed && run.reading.valid);
+  EXPECT_EQ(repair_member(run, "status"), "complete_except_kept");
+  EXPECT_NE(repair_member(run, "self_intersections_between_components"), "0") << run.report;
 }
 
 // The same checks on the other formats: binary STL stores every triangle's corners as floats,
