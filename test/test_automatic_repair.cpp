@@ -30,6 +30,16 @@ namespace support = mesh_repair_test;
 using mesh_repair_test::count_border_cycles;
 using mesh_repair_test::punch_hole;
 
+/// The libcgal-demo mesh `name` read into `mesh`; false when the package is absent (the test
+/// then skips).
+bool read_demo_mesh(const std::string& name, Mesh& mesh) {
+  const std::string path = std::string(MESH_REPAIR_DEMO_DATA_DIR) + "/" + name;
+  if (!std::filesystem::exists(path)) return false;
+  MR::Soup_repair_report soup;
+  EXPECT_EQ(MR::read_mesh(path, mesh, soup), "") << name;
+  return true;
+}
+
 Mesh sphere_with_holes() {
   Mesh sphere;
   MR::make_sphere(sphere, Point(0, 0, 0), 1.0, 4);
@@ -199,11 +209,9 @@ TEST(AutomaticRepair, TwoThreadsGiveTheSameMeshAsOne) {
 // elephant-with-holes has 40 pinched holes (two holes meeting at a vertex): the patches welded in
 // the copies cannot be spliced and are filled in place; the others come from the copies.
 TEST(AutomaticRepair, RealScanGivesTheSameMeshWithTwoThreads) {
-  const std::string path = std::string(MESH_REPAIR_DEMO_DATA_DIR) + "/elephant-with-holes.off";
-  if (!std::filesystem::exists(path)) GTEST_SKIP() << "libcgal-demo meshes absent (" << path << ")";
   Mesh serial;
-  MR::Soup_repair_report soup;
-  ASSERT_EQ(MR::read_mesh(path, serial, soup), "");
+  if (!read_demo_mesh("elephant-with-holes.off", serial))
+    GTEST_SKIP() << "libcgal-demo meshes absent";
   Mesh parallel = serial;
   const auto one = MR::automatic_repair(serial, MR::parameters::number_of_threads(1));
   const auto two = MR::automatic_repair(parallel, MR::parameters::number_of_threads(2));
@@ -460,12 +468,8 @@ TEST(AutomaticRepair, PatchesNeverCreateSelfIntersectionsAndUnfillableHolesAreLi
 
 TEST(AutomaticRepair, RealScansWithHolesBecomeClosed) {
   for (const char* name : {"elephant-with-holes.off", "mech-holes-shark.off"}) {
-    const std::string path = std::string(MESH_REPAIR_DEMO_DATA_DIR) + "/" + name;
-    if (!std::filesystem::exists(path))
-      GTEST_SKIP() << "libcgal-demo meshes absent (" << path << ")";
     Mesh mesh;
-    MR::Soup_repair_report soup;
-    ASSERT_EQ(MR::read_mesh(path, mesh, soup), "") << name;
+    if (!read_demo_mesh(name, mesh)) GTEST_SKIP() << "libcgal-demo meshes absent";
     const auto result = MR::automatic_repair(mesh);
     EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh)) << name;
     EXPECT_TRUE(CGAL::is_closed(mesh)) << name;
@@ -477,11 +481,8 @@ TEST(AutomaticRepair, RealScansWithHolesBecomeClosed) {
 // in one component): the intersecting faces are removed with up to 6 rings and refilled until
 // none is left; the repair keeps the surface (area not reduced).
 TEST(AutomaticRepair, ManySelfIntersectionsOfAScanAreAllRemoved) {
-  const std::string path = std::string(MESH_REPAIR_DEMO_DATA_DIR) + "/mannequin-devil.off";
-  if (!std::filesystem::exists(path)) GTEST_SKIP() << "libcgal-demo meshes absent (" << path << ")";
   Mesh mesh;
-  MR::Soup_repair_report soup;
-  ASSERT_EQ(MR::read_mesh(path, mesh, soup), "");
+  if (!read_demo_mesh("mannequin-devil.off", mesh)) GTEST_SKIP() << "libcgal-demo meshes absent";
   const double area_before = CGAL::Polygon_mesh_processing::area(mesh);
   const auto result = MR::automatic_repair(mesh);
   EXPECT_GT(result.self_intersections_input, 1000u);
@@ -495,11 +496,8 @@ TEST(AutomaticRepair, ManySelfIntersectionsOfAScanAreAllRemoved) {
 // A coarse CAD mesh whose derived stitching tolerance (6% of the diagonal) would push faces
 // through their neighbours: the stitching trial must reduce or skip it.
 TEST(AutomaticRepair, StitchingNeverAddsSelfIntersectionsOnCoarseCad) {
-  const std::string path = std::string(MESH_REPAIR_DEMO_DATA_DIR) + "/ALSTOM_TEST4.off";
-  if (!std::filesystem::exists(path)) GTEST_SKIP() << "libcgal-demo meshes absent (" << path << ")";
   Mesh mesh;
-  MR::Soup_repair_report soup;
-  ASSERT_EQ(MR::read_mesh(path, mesh, soup), "");
+  if (!read_demo_mesh("ALSTOM_TEST4.off", mesh)) GTEST_SKIP() << "libcgal-demo meshes absent";
   const auto result = MR::automatic_repair(mesh);
   EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
   EXPECT_TRUE(result.self_intersections_checked);
@@ -516,12 +514,8 @@ TEST(AutomaticRepair, StitchingNeverAddsSelfIntersectionsOnCoarseCad) {
 TEST(AutomaticRepair, CracksWithTJunctionsInRealMeshesAreClosedCleanly) {
   double frozen = 0;
   for (const char* name : {"femur.off", "couplingdown.off"}) {
-    const std::string path = std::string(MESH_REPAIR_DEMO_DATA_DIR) + "/" + name;
-    if (!std::filesystem::exists(path))
-      GTEST_SKIP() << "libcgal-demo meshes absent (" << path << ")";
     Mesh closed;
-    MR::Soup_repair_report soup;
-    ASSERT_EQ(MR::read_mesh(path, closed, soup), "") << name;
+    if (!read_demo_mesh(name, closed)) GTEST_SKIP() << "libcgal-demo meshes absent";
     const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(closed);
     const double diagonal =
         std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
