@@ -128,6 +128,30 @@ TEST(SoupRepair, NonPlanarPentagonGivesAValidTriangleMesh) {
   EXPECT_EQ(num_faces(mesh), 3u);
 }
 
+// Polygons that CGAL's triangulate_faces refuses (it returns false and the file used to be
+// rejected with "some faces could not be triangulated"): a bow-tie quad and a heptagon whose
+// projection on its plane overlaps itself (from a furniture model of sweethome3d-furniture).
+// Each is triangulated on its own (a fan where CGAL fails); the good quad beside them keeps
+// CGAL's two triangles.
+TEST(SoupRepair, PolygonsCgalCannotTriangulateAreSplitIntoFans) {
+  const fs::path path = scratch("non_simple_polygons.obj");
+  write_text(path,
+             "v 0 0 0\nv 2 2 0\nv 2 0 0\nv 0 2 0\n"
+             "v 0.71135 6.6077 4.536\nv 0.71135 6.6422 4.7127\nv 0.71135 6.6511 4.904\n"
+             "v 0.7058 6.6723 4.8985\nv 0.7058 6.4977 4.2428\nv 0.71135 6.4822 4.2591\n"
+             "v 0.71135 6.5526 4.3845\n"
+             "v 10 0 0\nv 11 0 0\nv 11 1 0\nv 10 1 0\n"
+             "f 1 2 3 4\nf 5 6 7 8 9 10 11\nf 12 13 14 15\n");
+  Mesh mesh;
+  MR::Soup_repair_report report;
+  ASSERT_EQ(MR::read_mesh(path.string(), mesh, report), "");
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  EXPECT_EQ(report.polygons_triangulated, 3u);
+  EXPECT_EQ(report.triangles_from_polygons, 2u + 5u + 2u);
+  EXPECT_EQ(num_faces(mesh), 9u);
+  for (auto f : faces(mesh)) EXPECT_EQ(CGAL::degree(f, mesh), 3u);
+}
+
 TEST(ReadErrors, EachBadFileGetsOneLine) {
   struct Case {
     std::string name, content;

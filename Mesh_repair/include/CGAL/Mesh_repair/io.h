@@ -26,10 +26,12 @@
 #include <CGAL/Mesh_repair/file_safety.h>
 #include <CGAL/Mesh_repair/internal/readers/read_soup.h>
 #include <CGAL/Mesh_repair/json_writer.h>
+#include <CGAL/Mesh_repair/polygon_soup.h>
 #include <CGAL/Mesh_repair/soup_repair_report.h>
 #include <CGAL/Mesh_repair/internal/soup_validation.h>
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -44,6 +46,7 @@
 #include <map>
 #include <set>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -60,15 +63,6 @@ struct Read_options {
   /// joins the shells. `mesh_repair repair` sets it; `check` and the read-back of a written file
   /// keep CGAL's rule.
   bool remove_zero_volume_walls = false;
-};
-
-/// A soup as read from a file: points and polygons of point indices.
-template <class Point>
-struct Polygon_soup {
-  std::vector<Point> points;
-  std::vector<std::vector<std::size_t>> polygons;
-  /// Faces of the file with fewer than three vertices, left out of `polygons`.
-  std::size_t short_polygons_skipped = 0;
 };
 
 /// Reads a mesh file's bytes held in memory (`format` "OFF", "OBJ", "STL" or "PLY"; `name`
@@ -288,9 +282,52 @@ inline void add_soup_changes(Soup_repair_report& report, const Soup_repair_repor
   report.orientable = report.orientable && more.orientable;
 }
 
-/// Builds `pm` from `soup` with every polygon of more than three sides split into a fan of
-/// triangles from its first point, the triangle soup repaired again (the fans' diagonals may
-/// meet other faces); the triangulation and the second repair are counted in `report`.
+namespace internal {
+
+/// Appends to `triangles` the triangles of one polygon of `points` (indices into `points`):
+/// CGAL's triangulation of the polygon on its own (a constrained Delaunay triangulation in its
+/// plane) when it succeeds, else a fan from its first point. CGAL fails on polygons whose
+/// points are all collinear and on polygons whose projection is not simple (both are found in
+/// real OBJ files); their fans' degenerate or overlapping triangles are left to the repair.
+template <class PolygonMesh, class Point, class Polygon, class Triangles>
+void triangulate_polygon(const std::vector<Point>& points, const Polygon& polygon,
+                         Triangles& triangles) {
+  using vertex_descriptor = typename boost::graph_traits<PolygonMesh>::vertex_descriptor;
+  auto fan = [&] {
+    for (std::size_t k = 1; k + 1 < polygon.size(); ++k)
+      triangles.push_back({polygon[0], polygon[k], polygon[k + 1]});
+  };
+  PolygonMesh one;
+  auto vpm = get(CGAL::vertex_point, one);
+  std::unordered_map<vertex_descriptor, std::size_t> index;
+  std::vector<vertex_descriptor> corners;
+  for (std::size_t i : polygon) {
+    const vertex_descriptor v = add_vertex(one);
+    put(vpm, v, points[i]);
+    index.emplace(v, i);
+    corners.push_back(v);
+  }
+  const auto f = CGAL::Euler::add_face(corners, one);
+  if (f == boost::graph_traits<PolygonMesh>::null_face() ||
+      !CGAL::Polygon_mesh_processing::triangulate_face(f, one) ||
+      !CGAL::is_valid_polygon_mesh(one) || num_faces(one) + 2 != polygon.size())
+    return fan();
+  for (auto g : faces(one)) {
+    std::array<std::size_t, 3> triangle;
+    std::size_t k = 0;
+    for (vertex_descriptor v : vertices_around_face(halfedge(g, one), one))
+      if (k < 3) triangle[k++] = index.at(v);
+    triangles.push_back({triangle[0], triangle[1], triangle[2]});
+  }
+}
+
+}  // namespace internal
+
+/// Builds `pm` from `soup` with every polygon of more than three sides triangulated on its own
+/// (`internal::triangulate_polygon`: CGAL's triangulation, or a fan where CGAL fails), the
+/// triangle soup repaired again (a fan's diagonals may meet other faces); the triangulation and
+/// the second repair are counted in `report`. The fallback of `soup_to_mesh` when CGAL cannot
+/// triangulate the faces of the whole mesh.
 template <class PolygonMesh, class Point>
 std::string triangulate_soup_to_mesh(const Polygon_soup<Point>& soup, PolygonMesh& pm,
                                      Soup_repair_report& report) {
@@ -299,9 +336,12 @@ std::string triangulate_soup_to_mesh(const Polygon_soup<Point>& soup, PolygonMes
   triangles.points = soup.points;
   std::size_t polygons = 0;
   for (const auto& polygon : soup.polygons) {
-    polygons += polygon.size() > 3 ? 1 : 0;
-    for (std::size_t k = 1; k + 1 < polygon.size(); ++k)
-      triangles.polygons.push_back({polygon[0], polygon[k], polygon[k + 1]});
+    if (polygon.size() <= 3) {
+      triangles.polygons.push_back(polygon);
+      continue;
+    }
+    ++polygons;
+    internal::triangulate_polygon<PolygonMesh>(soup.points, polygon, triangles.polygons);
   }
   report.polygons_triangulated = polygons;
   report.triangles_from_polygons = triangles.polygons.size() - (soup.polygons.size() - polygons);
@@ -328,7 +368,7 @@ std::string soup_to_mesh(const Polygon_soup<Point>& soup, PolygonMesh& pm, bool 
     for (const auto& polygon : soup.polygons) non_triangles += polygon.size() > 3 ? 1 : 0;
     if (non_triangles > 0) {
       const std::size_t before = num_faces(pm);
-      if (!PMP::triangulate_faces(pm)) return "some faces could not be triangulated";
+      if (!PMP::triangulate_faces(pm)) return triangulate_soup_to_mesh(soup, pm, report);
       report.polygons_triangulated = non_triangles;
       report.triangles_from_polygons = num_faces(pm) - before + non_triangles;
       // CGAL 5.5's triangulate_faces can return a corrupt halfedge structure for a non-planar

@@ -101,6 +101,10 @@ std::string validate_points(const std::string& filename, const std::vector<Point
 template <class Point>
 std::string validate_soup(const std::string& filename, const std::vector<Point>& points,
                           const std::vector<std::vector<std::size_t>>& polygons) {
+  if (polygons.empty() && !points.empty())
+    return filename + ": contains no faces (no face with three or more vertices), only " +
+           std::to_string(points.size()) +
+           " points: a point cloud (`mesh_repair mesh-points` meshes one)";
   if (polygons.empty())
     return filename + ": contains no faces (no face with three or more vertices)";
   if (points.empty()) return filename + ": contains no vertices";
