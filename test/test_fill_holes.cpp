@@ -213,6 +213,18 @@ TEST(AdvancingFrontCore, StuckFrontIsClosedByTheCheckedTriangulationOfItsLoop) {
   const MI::Front_triangulation walled = MI::advance_front(input, identity, size, options);
   EXPECT_FALSE(walled.closed);
   EXPECT_FALSE(walled.failure.empty());
+
+  // The attempts on one hole share one budget (fill_hole_advancing_front): the walled loop,
+  // which has no valid triangulation, spends some of it; with the budget spent, a loop whose
+  // first triangulation passes is still closed (one round of the program always runs).
+  std::size_t left = 1000;
+  options.remnant_visits_left = &left;
+  EXPECT_FALSE(MI::advance_front(input, identity, size, options).closed);
+  EXPECT_LT(left, 1000u);
+  left = 0;
+  input.context_points.clear();
+  input.context_triangles.clear();
+  EXPECT_TRUE(MI::advance_front(input, identity, size, options).closed);
 }
 
 /// The front checks its own patch, in its final (relaxed) positions, against itself and every

@@ -74,6 +74,11 @@ struct Front_options {
   /// same exact 3D test as the front's (see `close_remnant`).
   bool close_remnant = false;
   std::size_t max_remnant_edges = 200;
+  /// The work (stored triangles visited) left to the closings of remnant loops, shared by every
+  /// attempt on one hole (`fill_hole_advancing_front` tries up to 15 placements and sizes): a
+  /// hole whose loops have no valid triangulation (another part of the mesh passes through it)
+  /// spends the budget once, not once per attempt. Null: `remnant_visit_budget` per loop.
+  std::size_t* remnant_visits_left = nullptr;
   /// The size function ignores its second argument (the mean adjacent front edge length), so
   /// the front computes it once per node.
   bool size_from_position_only = false;
@@ -150,6 +155,10 @@ class Small_list {
 using Front_projection = std::function<Vec3(const Vec3&, const Vec3&)>;
 /// The edge length wanted at a point, given the mean length of the two front edges there.
 using Front_size = std::function<double(const Vec3&, double)>;
+
+/// The stored triangles that the closing of one remnant loop may visit in its eager stage
+/// (`Advancing_front::close_remnant_with`).
+constexpr std::size_t remnant_visit_budget = 60'000'000;
 
 class Advancing_front {
   using Point_2 = Epick::Point_2;
@@ -1086,9 +1095,9 @@ class Advancing_front {
   /// `remnant_lazy_rounds` rounds did not settle it (loops with no valid triangulation, or many
   /// failing candidates): the program tests each candidate that would improve on the best so
   /// far, reusing every answer, until done or `remnant_visit_budget` stored triangles were
-  /// visited; the loop is then left open.
+  /// visited; the loop is then left open. With `Front_options::remnant_visits_left`, the
+  /// eager stage stops when the hole's shared budget is spent.
   static constexpr int remnant_lazy_rounds = 64;
-  static constexpr std::size_t remnant_visit_budget = 60'000'000;
   bool close_remnant_with(const std::vector<std::size_t>& loop, bool shaped) {
     const std::size_t n = loop.size();
     enum : char { unknown, cheap_ok, passes, fails };
@@ -1099,30 +1108,37 @@ class Advancing_front {
     };
     bool eager = false;
     const std::size_t visits_at_start = visits_;
+    std::size_t* shared = options_.remnant_visits_left;
+    const std::size_t budget =
+        shared != nullptr ? std::min(remnant_visit_budget, *shared) : remnant_visit_budget;
+    const auto used = [&] { return visits_ - visits_at_start; };
+    const auto spend = [&](bool closed) {
+      if (shared != nullptr) *shared -= std::min(*shared, used());
+      return closed;
+    };
     const auto allowed = [&](std::size_t i, std::size_t k, std::size_t j) {
       char& s = state[(i * n + k) * n + j];
       if (s == unknown) s = cheap_test(loop, i, k, j, shaped) ? cheap_ok : fails;
-      if (s == cheap_ok && eager && visits_ - visits_at_start <= remnant_visit_budget)
-        s = exact_test(i, k, j) ? passes : fails;
+      if (s == cheap_ok && eager && used() <= budget) s = exact_test(i, k, j) ? passes : fails;
       return s == passes || (s == cheap_ok && !eager);
     };
     for (int round = 0; round < remnant_lazy_rounds; ++round) {
       const std::vector<std::array<std::size_t, 3>> triangles =
           least_area_triangulation(loop, allowed);
-      if (triangles.empty()) return false;
+      if (triangles.empty()) return spend(false);
       bool all_pass = true;
       for (const auto& t : triangles) {
         char& s = state[(t[0] * n + t[1]) * n + t[2]];
         if (s == cheap_ok) s = exact_test(t[0], t[1], t[2]) ? passes : fails;
         all_pass = all_pass && s == passes;
       }
-      if (all_pass) return add_remnant_triangles(loop, triangles);
+      if (all_pass) return spend(add_remnant_triangles(loop, triangles));
     }
     eager = true;
     const std::vector<std::array<std::size_t, 3>> triangles =
         least_area_triangulation(loop, allowed);
-    if (triangles.empty() || visits_ - visits_at_start > remnant_visit_budget) return false;
-    return add_remnant_triangles(loop, triangles);
+    if (triangles.empty() || used() > budget) return spend(false);
+    return spend(add_remnant_triangles(loop, triangles));
   }
 
   /// The tests of a remnant triangle (positions i < k < j in `loop`) that need no search: three
