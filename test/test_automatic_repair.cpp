@@ -2,11 +2,13 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Mesh_repair/automatic_repair.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Mesh_repair/detect_defects.h>
 #include <CGAL/Mesh_repair/generators.h>
 #include <CGAL/Mesh_repair/io.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
 #include <gtest/gtest.h>
 
 #include "support/cgal_calls.h"
@@ -303,6 +305,80 @@ TEST(AutomaticRepair, SelfIntersectionsBetweenComponentsAreKept) {
       << (result.remaining.empty() ? "" : result.remaining.front());
   ASSERT_EQ(result.kept.size(), 1u);
   EXPECT_NE(result.kept[0].find("between separate components"), std::string::npos);
+}
+
+// Two interpenetrating spheres and a third apart, with `merge_intersecting_solids`: the two
+// become their union (one closed part, no self-intersection, the faces inside removed: its
+// volume is that of the union of the two balls), the third is untouched.
+TEST(AutomaticRepair, IntersectingSolidsBecomeTheirUnionWhenAsked) {
+  Mesh mesh;
+  MR::make_sphere(mesh, Point(0, 0, 0), 1.0, 3);
+  MR::make_sphere(mesh, Point(1.2, 0.1, 0), 1.0, 3);
+  MR::make_sphere(mesh, Point(5, 0, 0), 0.5, 2);
+  const double one = CGAL::Polygon_mesh_processing::volume(mesh) / (2 + 0.125);
+  ASSERT_GT(self_intersection_count(mesh), 0u);
+  const auto result = MR::automatic_repair(mesh, MR::parameters::merge_intersecting_solids(true));
+  EXPECT_EQ(result.status(), MR::Repair_status::complete)
+      << (result.remaining.empty() ? "" : result.remaining.front());
+  EXPECT_EQ(result.solids_merged, 2u);
+  EXPECT_EQ(result.self_intersections_output, 0u);
+  EXPECT_EQ(self_intersection_count(mesh), 0u);
+  EXPECT_TRUE(CGAL::is_closed(mesh));
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  EXPECT_EQ(CGAL::Polygon_mesh_processing::connected_components(
+                mesh, mesh.add_property_map<Mesh::Face_index, std::size_t>("f:cc").first),
+            2u);
+  // Two unit balls 1.204 apart overlap in a lens of volume pi (4 + d) (2 - d)^2 / 12.
+  const double d = std::hypot(1.2, 0.1);
+  const double lens = std::acos(-1.0) * (4 + d) * (2 - d) * (2 - d) / 12;
+  const double ball = 4 * std::acos(-1.0) / 3;
+  const double expected = (2 * ball - lens) * one / ball + 0.125 * one;
+  EXPECT_NEAR(CGAL::Polygon_mesh_processing::volume(mesh), expected, 0.01 * expected);
+  const auto* step = find_step(result, "intersecting solids merged");
+  ASSERT_NE(step, nullptr);
+  EXPECT_EQ(step->count("unions"), 1.0);
+  EXPECT_GT(step->count("faces_removed"), step->count("faces_added") * 0.5);
+}
+
+// Two cubes of the same height, one shifted sideways into the other: their top and bottom faces
+// overlap in one plane, where CGAL 5.5's corefinement can crash (it did on a furniture model);
+// the parts are kept apart and the note says why.
+TEST(AutomaticRepair, SolidsWithCoplanarFacesThatMeetAreKeptApart) {
+  Mesh mesh, shifted;
+  MR::make_subdivided_cube<Mesh, Point>(mesh, 1.0, 2);
+  MR::make_subdivided_cube<Mesh, Point>(shifted, 1.0, 2);
+  for (auto v : shifted.vertices())
+    shifted.point(v) = shifted.point(v) + Kernel::Vector_3(0.5, 0.3, 0);
+  CGAL::copy_face_graph(shifted, mesh);
+  const std::size_t faces = mesh.number_of_faces();
+  const auto result = MR::automatic_repair(mesh, MR::parameters::merge_intersecting_solids(true));
+  EXPECT_EQ(result.solids_merged, 0u);
+  EXPECT_EQ(mesh.number_of_faces(), faces);
+  const auto* step = find_step(result, "intersecting solids merged");
+  ASSERT_NE(step, nullptr);
+  ASSERT_EQ(step->notes.size(), 1u);
+  EXPECT_NE(step->notes[0].find("coplanar"), std::string::npos) << step->notes[0];
+}
+
+// A part that is open cannot be merged (corefinement needs volumes): the group is kept apart,
+// the note says why, and the pairs stay listed as kept.
+TEST(AutomaticRepair, AnOpenPartIsNotMergedAndTheNoteSaysWhy) {
+  Mesh mesh;
+  MR::make_sphere(mesh, Point(0, 0, 0), 1.0, 3);
+  Mesh open;
+  MR::make_sphere(open, Point(1.2, 0.1, 0), 1.0, 3);
+  punch_hole(open, Point(2.2, 0.1, 0), 0.3);
+  open.collect_garbage();
+  CGAL::copy_face_graph(open, mesh);
+  const auto result =
+      MR::automatic_repair(mesh, MR::parameters::merge_intersecting_solids(true).max_hole_edges(3));
+  EXPECT_EQ(result.solids_merged, 0u);
+  EXPECT_GT(result.self_intersections_between_components, 0u);
+  const auto* step = find_step(result, "intersecting solids merged");
+  ASSERT_NE(step, nullptr);
+  EXPECT_EQ(step->count("groups_kept_apart"), 1.0);
+  ASSERT_EQ(step->notes.size(), 1u);
+  EXPECT_NE(step->notes[0].find("not closed"), std::string::npos) << step->notes[0];
 }
 
 /// A sphere with a hole whose border is folded as on scans: every third border vertex is pushed

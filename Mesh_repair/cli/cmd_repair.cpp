@@ -49,7 +49,10 @@ const char* const repair_help =
     "  --no-self-intersections  neither count nor remove self-intersections (faster)\n"
     "  --keep-self-intersections  keep the input's self-intersections (default: the faces\n"
     "                           intersecting others of their component are replaced by checked\n"
-    "                           patches; intersections between components are always kept)\n"
+    "                           patches; intersections between components are kept unless\n"
+    "                           --merge-intersecting-solids)\n"
+    "  --merge-intersecting-solids  replace closed parts that intersect one another by their\n"
+    "                           union (CGAL corefinement; the faces inside are removed)\n"
     "  --threads N              threads for independent holes (default: all cores)\n"
     "  --seed S                 seed of the randomised methods (default 0)\n"
     "  --binary                 binary STL/PLY output\n"
@@ -77,6 +80,7 @@ const std::set<std::string> repair_flags = {"--keep-components",
                                             "--no-self-intersections",
                                             "--remove-self-intersections",
                                             "--keep-self-intersections",
+                                            "--merge-intersecting-solids",
                                             "--fill-sheet-borders",
                                             "--binary",
                                             "--quiet"};
@@ -252,6 +256,7 @@ int repair_one(const Arguments& args) {
                 .detect_self_intersections(!args.has("--no-self-intersections"))
                 .repair_self_intersections(!args.has("--keep-self-intersections") &&
                                            !args.has("--no-self-intersections"))
+                .merge_intersecting_solids(args.has("--merge-intersecting-solids"))
                 .number_of_threads(int(threads))
                 .random_seed(unsigned(args.get_int("--seed", 0)))
                 .visitor(std::ref(progress)));

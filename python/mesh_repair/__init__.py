@@ -222,15 +222,17 @@ def check(vertices, faces=None, *, tolerance=None, tolerance_rel=None, self_inte
 def repair(vertices, faces=None, *, tolerance=None, tolerance_rel=None, fill="self_validated",
            continuity=1, max_hole_size=None, max_hole_edges=None, sheet_border_ratio=0.9,
            fill_sheet_borders=False, largest_component=False, ring_holes=True,
-           self_intersections=True, remove_self_intersections=True, threads=0, seed=0,
-           progress=None):
+           self_intersections=True, remove_self_intersections=True,
+           merge_intersecting_solids=False, threads=0, seed=0, progress=None):
     """The automatic repair pipeline (``mesh_repair repair``): soup repair and orientation,
     stitching of gaps and overlaps, T-junctions, degenerate faces, hole filling, verification.
     Options as the CLI's (``mesh_repair repair --help``): ``fill`` one of ``FILL_METHODS``,
     ``continuity`` 0-2 (Liepa fairing), ``max_hole_size`` (fraction of the bounding-box
     diagonal) and ``max_hole_edges`` leave larger holes open, ``threads`` 0 = all cores,
     ``remove_self_intersections`` replaces the faces that intersect others of their component
-    by checked patches (``self_intersections=False`` neither counts nor removes them).
+    by checked patches (``self_intersections=False`` neither counts nor removes them),
+    ``merge_intersecting_solids`` replaces closed parts that intersect one another by their
+    union (CGAL corefinement; the faces inside are removed).
     Returns a ``Result``; the report holds ``soup_repair``, ``defects_before``,
     ``defects_after`` and ``repair``."""
     options = _tolerance({}, tolerance, tolerance_rel)
@@ -242,6 +244,7 @@ def repair(vertices, faces=None, *, tolerance=None, tolerance_rel=None, fill="se
         ring_holes=bool(ring_holes),
         self_intersections=bool(self_intersections),
         remove_self_intersections=bool(remove_self_intersections),
+        merge_intersecting_solids=bool(merge_intersecting_solids),
         threads=_number("threads", threads, 0, 1024, integer=True),
         seed=_number("seed", seed, 0, 2**32 - 1, integer=True),
     )

@@ -100,6 +100,7 @@ struct Repair_options {
   double sheet_border_ratio = 0.9;
   bool largest_component = false, ring_holes = true, self_intersections = true;
   bool remove_self_intersections = true;
+  bool merge_intersecting_solids = false;
   int threads = 0;
   unsigned seed = 0;
 };

@@ -364,6 +364,7 @@ PYBIND11_MODULE(_core, m) {
         .get("ring_holes", o.ring_holes)
         .get("self_intersections", o.self_intersections)
         .get("remove_self_intersections", o.remove_self_intersections)
+        .get("merge_intersecting_solids", o.merge_intersecting_solids)
         .get("threads", o.threads)
         .get("seed", o.seed)
         .finish();

@@ -288,6 +288,7 @@ Operator_output repair(Mesh_input& input, const Repair_options& options, Python_
                 .detect_self_intersections(options.self_intersections)
                 .repair_self_intersections(options.remove_self_intersections &&
                                            options.self_intersections)
+                .merge_intersecting_solids(options.merge_intersecting_solids)
                 .number_of_threads(options.threads)
                 .random_seed(options.seed)
                 .visitor(std::ref(visitor)));

@@ -55,6 +55,25 @@ def test_every_fill_method_closes_a_sphere_with_two_holes(method):
     assert border_cycles(result.vertices, result.faces) == 0
 
 
+def test_merge_intersecting_solids_gives_one_closed_solid_without_intersections():
+    v, f = icosphere(3)
+    both_v = np.vstack([v, v + [1.2, 0.1, 0.0]])
+    both_f = np.vstack([f, f + len(v)])
+    kept = mesh_repair.repair(both_v, both_f).report["repair"]
+    assert kept["self_intersections_between_components"] > 0
+    assert kept["status"] == "complete_except_kept"
+    merged = mesh_repair.repair(both_v, both_f, merge_intersecting_solids=True)
+    repair = merged.report["repair"]
+    assert repair["status"] == "complete", repair["remaining"]
+    assert repair["solids_merged"] == 2 and repair["self_intersections_output"] == 0
+    assert border_cycles(merged.vertices, merged.faces) == 0
+    # The faces inside the other ball are gone: no vertex lies inside both balls.
+    inside_both = (np.linalg.norm(merged.vertices, axis=1) < 0.99) & (
+        np.linalg.norm(merged.vertices - [1.2, 0.1, 0.0], axis=1) < 0.99)
+    assert not inside_both.any()
+    assert len(merged.faces) < len(both_f)
+
+
 def test_max_hole_edges_leaves_larger_holes_open():
     v, f = holed_sphere(3, holes=1, radius=0.5)
     result = mesh_repair.fill_holes(v, f, max_hole_edges=3)

@@ -36,6 +36,8 @@ Repair_options repair_options_from(const PolygonMesh& pm, const NamedParameters&
       get_parameter(np, internal_np::detect_self_intersections_t{}), o.detect_self_intersections);
   o.repair_self_intersections = choose_parameter(
       get_parameter(np, internal_np::repair_self_intersections_t{}), o.repair_self_intersections);
+  o.merge_intersecting_solids = choose_parameter(
+      get_parameter(np, internal_np::merge_intersecting_solids_t{}), o.merge_intersecting_solids);
   o.fill = fill_options_from(np);
   return o;
 }
@@ -136,6 +138,17 @@ Repair_options repair_options_from(const PolygonMesh& pm, const NamedParameters&
 ///       automatic_repair.md, "Self-intersections")}
 ///     \cgalParamType{bool}
 ///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{merge_intersecting_solids}
+///     \cgalParamDescription{replace closed parts that intersect one another (an assembly of
+///       interpenetrating solids) by their union, computed by CGAL's corefinement; the faces
+///       inside the union are removed, so the area drops. A group of intersecting parts of which
+///       one is open, intersects itself or bounds no volume, or in which two parts have
+///       coplanar faces that meet, is kept apart (a note says why).
+///       Points pass through doubles (exact kernels are rounded there). Doc:
+///       automatic_repair.md, "Self-intersections"}
+///     \cgalParamType{bool}
+///     \cgalParamDefault{`false`: each part stays a solid of its own, nothing is lost}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_threads}
 ///     \cgalParamDescription{threads of TBB's pool during the call: the self-intersection

@@ -62,6 +62,8 @@ struct Repair_result {
   /// Of the output's pairs, those between two connected components (an assembly of solids):
   /// kept on purpose (listed in `kept`), counted by the self-intersection removal step.
   std::size_t self_intersections_between_components = 0;
+  /// Parts replaced by their union (`merge_intersecting_solids`).
+  std::size_t solids_merged = 0;
   std::size_t border_cycles_left = 0;
   /// Non-manifold vertices and edges of the output by position: what a reader that merges
   /// coincident points (CGAL's `read_polygon_mesh`) sees, where separate sheets of the surface
@@ -118,6 +120,7 @@ inline void write_json(Json_writer& json, const Repair_result& r) {
       .field("self_intersections_output", r.self_intersections_output)
       .field("self_intersections_in_patches", r.self_intersections_in_patches)
       .field("self_intersections_between_components", r.self_intersections_between_components)
+      .field("solids_merged", r.solids_merged)
       .array("unavailable_steps", r.unavailable_steps)
       .array("remaining", r.remaining)
       .array("kept", r.kept);

@@ -73,6 +73,7 @@ MESH_REPAIR_PARAMETER(number_of_threads)
 // automatic repair
 MESH_REPAIR_PARAMETER(keep_largest_component)     // bool: drop all but the largest component
 MESH_REPAIR_PARAMETER(repair_self_intersections)  // bool: replace self-intersecting faces
+MESH_REPAIR_PARAMETER(merge_intersecting_solids)  // bool: union of intersecting closed parts
 
 // hole benchmark (hole_benchmark.h)
 MESH_REPAIR_PARAMETER(number_of_holes)  // holes punched per mesh

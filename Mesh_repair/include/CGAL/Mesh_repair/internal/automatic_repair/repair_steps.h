@@ -7,6 +7,7 @@
 
 #include <CGAL/Mesh_repair/fill_holes.h>
 #include <CGAL/Mesh_repair/internal/automatic_repair/region_replacement.h>
+#include <CGAL/Mesh_repair/internal/automatic_repair/solid_union.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/border_cycles.h>
 #include <CGAL/Mesh_repair/internal/mesh_counts.h>
 #include <CGAL/Mesh_repair/internal/stitching/run_gap_stitcher.h>
@@ -21,6 +22,7 @@
 #include <CGAL/Polygon_mesh_processing/stitch_borders.h>
 #include <CGAL/Polygon_mesh_processing/shape_predicates.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
+#include <CGAL/Union_find.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
@@ -51,6 +53,7 @@ struct Repair_options {
   bool keep_largest_component = false;
   bool detect_self_intersections = true;
   bool repair_self_intersections = true;
+  bool merge_intersecting_solids = false;
   Fill_options fill;
 };
 
@@ -664,6 +667,131 @@ void step_remove_self_intersections(PolygonMesh& pm, VertexPointMap vpm, const G
   }
 }
 
+/// The faces of `group` as a triangle soup of the core's points (`union_of_solids`).
+template <class PolygonMesh, class VertexPointMap, class FaceRange>
+Triangle_soup soup_of_faces(const PolygonMesh& pm, VertexPointMap vpm, const FaceRange& group) {
+  std::unordered_map<typename boost::graph_traits<PolygonMesh>::vertex_descriptor, std::size_t>
+      index;
+  Triangle_soup soup;
+  for (auto f : group) {
+    std::vector<std::size_t> triangle;
+    for (auto v : vertices_around_face(halfedge(f, pm), pm)) {
+      auto at = index.emplace(v, soup.points.size());
+      if (at.second) {
+        const Vec3 p = to_array(get(vpm, v));
+        soup.points.emplace_back(p[0], p[1], p[2]);
+      }
+      triangle.push_back(at.first->second);
+    }
+    soup.polygons.push_back(std::move(triangle));
+  }
+  return soup;
+}
+
+/// Adds the triangles of `soup` to `pm`, with vertices of their own (a union is a closed
+/// manifold mesh, so every face can be added).
+template <class PolygonMesh, class VertexPointMap>
+void add_soup(PolygonMesh& pm, VertexPointMap vpm, const Triangle_soup& soup) {
+  using Point = typename boost::property_traits<VertexPointMap>::value_type;
+  using vertex_descriptor = typename boost::graph_traits<PolygonMesh>::vertex_descriptor;
+  std::vector<vertex_descriptor> vertices;
+  vertices.reserve(soup.points.size());
+  for (const auto& p : soup.points) {
+    vertices.push_back(add_vertex(pm));
+    put(vpm, vertices.back(), Point(p.x(), p.y(), p.z()));
+  }
+  for (const auto& t : soup.polygons)
+    CGAL::Euler::add_face(
+        std::array<vertex_descriptor, 3>{vertices[t[0]], vertices[t[1]], vertices[t[2]]}, pm);
+}
+
+/// True when the faces `f` and `g` lie in one plane (exact orientation predicate). CGAL 5.5's
+/// corefinement can crash on coplanar faces of two parts (a null dereference in its coplanar
+/// case, found on a furniture model), so such parts are not merged.
+template <class PolygonMesh, class VertexPointMap, class GeomTraits>
+bool coplanar_faces(const PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
+                    typename boost::graph_traits<PolygonMesh>::face_descriptor f,
+                    typename boost::graph_traits<PolygonMesh>::face_descriptor g) {
+  std::vector<typename boost::property_traits<VertexPointMap>::value_type> plane;
+  for (auto v : vertices_around_face(halfedge(f, pm), pm)) plane.push_back(get(vpm, v));
+  const auto orientation = traits.orientation_3_object();
+  for (auto v : vertices_around_face(halfedge(g, pm), pm))
+    if (orientation(plane[0], plane[1], plane[2], get(vpm, v)) != CGAL::COPLANAR) return false;
+  return true;
+}
+
+/// With `merge_intersecting_solids`, closed parts that intersect one another (an assembly of
+/// interpenetrating solids) are replaced by their union (CGAL's corefinement,
+/// solid_union.h), one union per group of parts linked by intersections. A group with a part
+/// that is open, intersects itself or bounds no volume keeps its parts, and a note says why.
+template <class PolygonMesh, class VertexPointMap, class GeomTraits>
+void step_merge_intersecting_solids(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
+                                    Any_visitor visitor, Repair_result& result) {
+  using face_descriptor = typename boost::graph_traits<PolygonMesh>::face_descriptor;
+  Step_timer timer(result, "intersecting solids merged", visitor);
+  std::vector<std::pair<face_descriptor, face_descriptor>> pairs;
+  CGAL::Polygon_mesh_processing::self_intersections(pm, std::back_inserter(pairs));
+  const auto component = face_components(pm);
+  std::size_t components = 0;
+  for (const auto& c : component) components = std::max(components, c.second + 1);
+  CGAL::Union_find<std::size_t> linked;
+  std::vector<CGAL::Union_find<std::size_t>::handle> handle;
+  for (std::size_t c = 0; c < components; ++c) handle.push_back(linked.make_set(c));
+  std::vector<bool> involved(components, false), coplanar(components, false);
+  for (const auto& pair : pairs) {
+    const std::size_t a = component.at(pair.first), b = component.at(pair.second);
+    if (a == b) continue;
+    involved[a] = involved[b] = true;
+    linked.unify_sets(handle[a], handle[b]);
+    if (coplanar_faces(pm, vpm, traits, pair.first, pair.second)) coplanar[a] = true;
+  }
+  std::vector<std::vector<face_descriptor>> faces_of(components);
+  for (face_descriptor f : faces(pm)) faces_of[component.at(f)].push_back(f);
+  std::map<std::size_t, std::vector<std::size_t>> groups;  // by the group's first part
+  for (std::size_t c = 0; c < components; ++c)
+    if (involved[c]) groups[*linked.find(handle[c])].push_back(c);
+  std::size_t merged = 0, unions = 0, refused = 0, removed = 0, added = 0;
+  for (const auto& group : groups) {
+    std::vector<Triangle_soup> solids;
+    for (std::size_t c : group.second) solids.push_back(soup_of_faces(pm, vpm, faces_of[c]));
+    Triangle_soup united;
+    const bool flat_contact = std::any_of(group.second.begin(), group.second.end(),
+                                          [&](std::size_t c) { return coplanar[c]; });
+    const std::string why = flat_contact ? "two of them have coplanar faces that meet, which "
+                                           "CGAL's corefinement does not handle reliably"
+                                         : union_of_solids(solids, united);
+    if (!why.empty()) {
+      ++refused;
+      timer.step().notes.push_back(std::to_string(group.second.size()) +
+                                   " intersecting parts kept apart: " + why);
+      continue;
+    }
+    for (std::size_t c : group.second) {
+      for (face_descriptor f : faces_of[c]) CGAL::Euler::remove_face(halfedge(f, pm), pm);
+      removed += faces_of[c].size();
+    }
+    add_soup(pm, vpm, united);
+    added += united.polygons.size();
+    merged += group.second.size();
+    ++unions;
+  }
+  result.solids_merged = merged;
+  if (unions > 0) {
+    pairs.clear();
+    CGAL::Polygon_mesh_processing::self_intersections(pm, std::back_inserter(pairs));
+    const auto after = face_components(pm);
+    std::size_t between = 0;
+    for (const auto& pair : pairs) between += after.at(pair.first) != after.at(pair.second);
+    result.self_intersections_between_components = between;
+  }
+  timer.count("groups_of_intersecting_parts", double(groups.size()));
+  timer.count("parts_merged", double(merged));
+  timer.count("unions", double(unions));
+  timer.count("groups_kept_apart", double(refused));
+  timer.count("faces_removed", double(removed));
+  timer.count("faces_added", double(added));
+}
+
 /// Faces of all filled patches and their one-ring are not known here (regions were copied
 /// back), so the verification counts self-intersections of the whole output and compares with
 /// the input count: new pairs can only come from the repair.
@@ -773,6 +901,8 @@ Repair_result run_repair_pipeline(PolygonMesh& pm, VertexPointMap vpm, const Geo
   if (!result.cancelled) step_fill_holes(pm, vpm, traits, options, visitor, result);
   if (!result.cancelled && options.repair_self_intersections)
     step_remove_self_intersections(pm, vpm, traits, options, visitor, result);
+  if (!result.cancelled && options.merge_intersecting_solids)
+    step_merge_intersecting_solids(pm, vpm, traits, visitor, result);
   step_verify(pm, options, result, visitor);
   list_remaining(result);
   return result;

@@ -1,0 +1,41 @@
+// Copyright (c) 2026 Mesh_repair developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_MESH_REPAIR_INTERNAL_AUTOMATIC_REPAIR_SOLID_UNION_H
+#define CGAL_MESH_REPAIR_INTERNAL_AUTOMATIC_REPAIR_SOLID_UNION_H
+
+// The union of closed parts that intersect one another (an assembly of touching or
+// interpenetrating solids), by CGAL's corefinement. automatic_repair keeps such parts as separate
+// solids unless asked to merge them (`merge_intersecting_solids`). The solids travel as triangle
+// soups of doubles so that CGAL's corefinement is compiled once, on the core's Surface_mesh, for
+// every mesh type of the caller.
+
+#include <CGAL/Mesh_repair/internal/compiled_core.h>
+#include <CGAL/Mesh_repair/internal/core_inline.h>
+#include <CGAL/Mesh_repair/polygon_soup.h>
+
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Mesh_repair {
+namespace internal {
+
+/// A part of a mesh as triangles of the core's points.
+using Triangle_soup = Polygon_soup<Core_traits::Point_3>;
+
+/// Writes into `out` the union of `solids` (at least two), computed one solid at a time with
+/// CGAL's `corefine_and_compute_union`. Each solid must be a closed, valid triangle mesh free of
+/// self-intersections that bounds a volume. Returns an empty string on success, else why the
+/// union was not computed (then `out` is unspecified).
+CGAL_MESH_REPAIR_CORE_INLINE std::string union_of_solids(const std::vector<Triangle_soup>& solids,
+                                                         Triangle_soup& out);
+
+}  // namespace internal
+}  // namespace Mesh_repair
+}  // namespace CGAL
+
+#ifndef CGAL_MESH_REPAIR_COMPILED_CORE
+#include <CGAL/Mesh_repair/internal/automatic_repair/solid_union_impl.h>
+#endif
+
+#endif  // CGAL_MESH_REPAIR_INTERNAL_AUTOMATIC_REPAIR_SOLID_UNION_H

@@ -1,0 +1,83 @@
+// Copyright (c) 2026 Mesh_repair developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_MESH_REPAIR_INTERNAL_AUTOMATIC_REPAIR_SOLID_UNION_IMPL_H
+#define CGAL_MESH_REPAIR_INTERNAL_AUTOMATIC_REPAIR_SOLID_UNION_IMPL_H
+
+#include <CGAL/Mesh_repair/internal/automatic_repair/solid_union.h>
+
+#include <CGAL/Polygon_mesh_processing/corefinement.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <exception>
+
+namespace CGAL {
+namespace Mesh_repair {
+namespace internal {
+
+namespace solid_union {
+
+/// `soup` as a mesh; an empty string, or why it is not a solid that corefinement accepts.
+inline std::string to_solid(const Triangle_soup& soup, Core_mesh& mesh) {
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  std::vector<Core_mesh::Vertex_index> vertices;
+  vertices.reserve(soup.points.size());
+  for (const auto& p : soup.points) vertices.push_back(mesh.add_vertex(p));
+  for (const auto& t : soup.polygons)
+    if (t.size() != 3 ||
+        mesh.add_face(vertices[t[0]], vertices[t[1]], vertices[t[2]]) == Core_mesh::null_face())
+      return "a part is not a manifold triangle mesh";
+  if (!CGAL::is_closed(mesh)) return "a part is not closed";
+  if (PMP::does_self_intersect(mesh)) return "a part intersects itself";
+  // An inward part (the soup's orientation is only consistent) is turned outward.
+  PMP::orient_to_bound_a_volume(mesh);
+  if (!PMP::does_bound_a_volume(mesh)) return "a part does not bound a volume";
+  return {};
+}
+
+inline void to_soup(const Core_mesh& mesh, Triangle_soup& soup) {
+  soup = Triangle_soup();
+  std::vector<std::size_t> index(mesh.number_of_vertices() + mesh.number_of_removed_vertices());
+  for (auto v : mesh.vertices()) {
+    index[v] = soup.points.size();
+    soup.points.push_back(mesh.point(v));
+  }
+  for (auto f : mesh.faces()) {
+    std::vector<std::size_t> triangle;
+    for (auto v : vertices_around_face(mesh.halfedge(f), mesh)) triangle.push_back(index[v]);
+    soup.polygons.push_back(std::move(triangle));
+  }
+}
+
+}  // namespace solid_union
+
+CGAL_MESH_REPAIR_CORE_INLINE std::string union_of_solids(const std::vector<Triangle_soup>& solids,
+                                                         Triangle_soup& out) {
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  if (solids.size() < 2) return "fewer than two parts";
+  Core_mesh merged;
+  std::string why = solid_union::to_solid(solids[0], merged);
+  if (!why.empty()) return why;
+  for (std::size_t i = 1; i < solids.size(); ++i) {
+    Core_mesh next, result;
+    why = solid_union::to_solid(solids[i], next);
+    if (!why.empty()) return why;
+    try {
+      if (!PMP::corefine_and_compute_union(merged, next, result))
+        return "CGAL's corefinement could not compute the union (its result would not be "
+               "manifold)";
+    } catch (const std::exception& e) {
+      return std::string("CGAL's corefinement failed: ") + e.what();
+    }
+    merged = std::move(result);
+  }
+  solid_union::to_soup(merged, out);
+  return {};
+}
+
+}  // namespace internal
+}  // namespace Mesh_repair
+}  // namespace CGAL
+
+#endif  // CGAL_MESH_REPAIR_INTERNAL_AUTOMATIC_REPAIR_SOLID_UNION_IMPL_H
