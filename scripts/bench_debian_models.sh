@@ -1,0 +1,54 @@
+#!/bin/sh
+# Repairs real models from Debian packages that the project never tuned on: a fixed sample of the
+# furniture OBJ files of sweethome3d-furniture (multi-part, open, interpenetrating, polygons),
+# the dirty STL files of openscad-testing-data and the OBJ models of minetest-data. Downloads
+# the packages with `apt-get download` (no install) into .cache/debian-models, runs
+# `mesh_repair repair --batch` on the sample and prints the count of each outcome, the total
+# time and the slowest files. Extra arguments go to `repair` (e.g. --merge-intersecting-solids).
+# Usage: scripts/bench_debian_models.sh [repair options]
+# MESH_REPAIR (default build/bin/mesh_repair), SAMPLE (default 60 furniture files), JOBS (2).
+set -eu
+ROOT=$(cd "$(dirname "$0")/.." && pwd)
+TOOL=${MESH_REPAIR:-$ROOT/build/bin/mesh_repair}
+SAMPLE=${SAMPLE:-60}
+JOBS=${JOBS:-2}
+CACHE=$ROOT/.cache/debian-models
+mkdir -p "$CACHE/debs" "$CACHE/extracted"
+for package in sweethome3d-furniture openscad-testing-data minetest-data; do
+  if ! ls "$CACHE/debs/${package}_"*.deb >/dev/null 2>&1; then
+    (cd "$CACHE/debs" && apt-get download "$package" >/dev/null 2>&1) ||
+      { echo "cannot download $package (apt-get download)" >&2; exit 1; }
+  fi
+  [ -d "$CACHE/extracted/$package" ] ||
+    dpkg -x "$CACHE/debs/${package}_"*.deb "$CACHE/extracted/$package"
+done
+WORK=$(mktemp -d "${TMPDIR:-/tmp}/mesh_repair_debian.XXXXXX")
+trap 'rm -rf "$WORK"' EXIT INT TERM
+mkdir -p "$WORK/in" "$WORK/out"
+python3 - "$CACHE/extracted" "$WORK/in" "$SAMPLE" <<'EOF'
+import glob, os, random, shutil, sys, zipfile
+extracted, out, sample = sys.argv[1], sys.argv[2], int(sys.argv[3])
+objs = []
+for archive in sorted(glob.glob(extracted + "/sweethome3d-furniture/**/*.sh3f", recursive=True)):
+    with zipfile.ZipFile(archive) as z:
+        objs += [(archive, n) for n in sorted(z.namelist()) if n.lower().endswith(".obj")]
+random.seed(7)
+for i, (archive, name) in enumerate(random.sample(objs, min(sample, len(objs)))):
+    with zipfile.ZipFile(archive) as z, open("%s/sh%02d_%s" % (out, i, os.path.basename(name).replace(" ", "_")), "wb") as f:
+        f.write(z.read(name))
+scad = extracted + "/openscad-testing-data/usr/share/openscad/testdata"
+for p in glob.glob(scad + "/scad/misc/bad-stl-*.stl") + glob.glob(scad + "/scad/bugs/*.stl") + \
+        glob.glob(scad + "/stl/adns*.stl"):
+    shutil.copy(p, out + "/os_" + os.path.basename(p))
+for p in glob.glob(extracted + "/minetest-data/**/*.obj", recursive=True):
+    shutil.copy(p, out + "/mt_" + os.path.basename(p))
+EOF
+start=$(date +%s.%N)
+"$TOOL" repair --batch "$WORK/in" --out-dir "$WORK/out" --jobs "$JOBS" --timeout 120 "$@" \
+  >"$WORK/batch.log" 2>&1 || true
+seconds=$(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { print b - a }')
+echo "files: $(ls "$WORK/in" | wc -l), wall time ${seconds} s (jobs $JOBS)"
+echo "outcomes:"
+tail -n +2 "$WORK/out/summary.csv" | cut -d, -f2 | sort | uniq -c
+echo "slowest:"
+tail -n +2 "$WORK/out/summary.csv" | awk -F, '{ print $4, $1 }' | sort -rn | head -5
