@@ -3,7 +3,9 @@ manual run finds it through MESH_REPAIR_BUILD_DIR (default: build/ of the reposi
 path also goes into the environment, for the child processes and Dask workers of the batch
 tests."""
 import os
+import shutil
 import sys
+import tempfile
 
 import pytest
 
@@ -30,3 +32,17 @@ def demo_mesh():
         return path
 
     return find
+
+
+def pytest_configure(config):
+    """pytest 7.2 (Debian 12) keeps the tmp_path folders of the last three runs under
+    /tmp/pytest-of-USER; tests must leave nothing in /tmp, so each run gets a folder of its own
+    (unless --basetemp names one), removed at the end of the session."""
+    if not config.option.basetemp:
+        config.option.basetemp = tempfile.mkdtemp(prefix="mesh_repair_pytest_")
+        config._mesh_repair_own_basetemp = True
+
+
+def pytest_unconfigure(config):
+    if getattr(config, "_mesh_repair_own_basetemp", False):
+        shutil.rmtree(config.option.basetemp, ignore_errors=True)
