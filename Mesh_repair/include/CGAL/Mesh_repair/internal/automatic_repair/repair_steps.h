@@ -723,7 +723,8 @@ bool coplanar_faces(const PolygonMesh& pm, VertexPointMap vpm, const GeomTraits&
 /// With `merge_intersecting_solids`, closed parts that intersect one another (an assembly of
 /// interpenetrating solids) are replaced by their union (CGAL's corefinement,
 /// solid_union.h), one union per group of parts linked by intersections. A group with a part
-/// that is open, intersects itself or bounds no volume keeps its parts, and a note says why.
+/// that is open, intersects itself or bounds no volume, or with coplanar faces of two parts that
+/// meet (`coplanar_faces`), keeps its parts, and a note says why.
 template <class PolygonMesh, class VertexPointMap, class GeomTraits>
 void step_merge_intersecting_solids(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
                                     Any_visitor visitor, Repair_result& result) {
