@@ -303,7 +303,7 @@ int run_fill(const std::vector<std::string>& args) {
                        "--seed", "--threads", "--report", "--objective", "--nodes", "--grid",
                        "--force-density", "--constraints", "--sheet-border-ratio", "--picture"});
   const std::string input = arguments.single_input(fill_help);
-  if (!arguments.has("-o")) throw Input_error("missing -o OUT; usage: " + std::string(fill_help));
+  if (!arguments.has("-o")) throw Input_error("missing -o OUT; " + usage_line(fill_help));
   const MR::Fill_method method = parse_method(arguments.get("--method", "self_validated"));
   const long long continuity = arguments.get_int("--continuity", 1);
   if (continuity < 0 || continuity > 2) throw Input_error("--continuity must be 0, 1 or 2");

@@ -88,12 +88,19 @@ long long Arguments::get_int(const std::string& name, long long fallback) const 
   return has(name) ? parse_int(get(name), name) : fallback;
 }
 
+std::string usage_line(const std::string& help) {
+  std::string line = help.substr(0, help.find('\n'));
+  const std::string prefix = "usage: ";
+  if (line.compare(0, prefix.size(), prefix) == 0) line.erase(0, prefix.size());
+  return "usage: " + line + " (see --help)";
+}
+
 std::string Arguments::single_input(const std::string& usage) const {
   if (positional_.size() == 2 && !has("-o") &&
       !CGAL::Mesh_repair::mesh_format(positional_[1]).empty())
-    throw Input_error("expected one input file; did you mean -o " + positional_[1] +
-                      "? usage: " + usage);
-  if (positional_.size() != 1) throw Input_error("expected one input file; usage: " + usage);
+    throw Input_error("expected one input file; did you mean -o " + positional_[1] + "? " +
+                      usage_line(usage));
+  if (positional_.size() != 1) throw Input_error("expected one input file; " + usage_line(usage));
   const std::string& input = positional_.front();
   check_outputs(input);
   return input;

@@ -50,6 +50,9 @@ struct Input_error : std::runtime_error {
 
 /// Options of one command. Each command declares the flags (no value) and the valued options it
 /// accepts; anything else is a usage error. Valued options may repeat (`get_all`).
+/// The first line of a command's help, for a one-line usage error.
+std::string usage_line(const std::string& help);
+
 class Arguments {
  public:
   Arguments(const std::vector<std::string>& args, const std::set<std::string>& flags,

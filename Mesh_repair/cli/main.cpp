@@ -81,7 +81,6 @@ int main(int argc, char** argv) {
       return exit_bad_input;
     }
   }
-  std::cerr << "mesh_repair: unknown command '" << name << "'\n";
-  print_usage(std::cerr);
+  std::cerr << "mesh_repair: unknown command '" << name << "' (see mesh_repair --help)\n";
   return exit_bad_input;
 }

@@ -35,6 +35,7 @@
 #include <iterator>
 #include <limits>
 #include <memory>
+#include <numeric>
 #include <map>
 #include <set>
 #include <sstream>
@@ -68,6 +69,12 @@ constexpr int max_self_intersection_rings = 6;
 /// Past this fraction of the faces, self-intersecting faces are not removed: the mesh is not a
 /// surface with local defects, and replacing most of it would lose its shape.
 constexpr double max_self_intersecting_face_fraction = 0.2;
+/// A closed part that still intersects itself after region replacement is autorefined (the pieces
+/// inside its volume removed) only while the area removed from the mesh stays within this
+/// fraction of its area, and no point of the part moves farther than the next fraction of the
+/// bounding-box diagonal from the result: past that the fold is not a defect but a shape.
+constexpr double max_autorefined_area_fraction = 0.01;
+constexpr double max_autorefined_distance_fraction = 0.005;
 
 /// Times a step, reports it to the visitor (balanced start/end, also on cancellation) and
 /// records it in the result.
@@ -598,6 +605,205 @@ face_components(const PolygonMesh& pm) {
   return component;
 }
 
+/// The faces of `group` as a triangle soup of the core's points (`union_of_solids`).
+template <class PolygonMesh, class VertexPointMap, class FaceRange>
+Triangle_soup soup_of_faces(const PolygonMesh& pm, VertexPointMap vpm, const FaceRange& group) {
+  std::unordered_map<typename boost::graph_traits<PolygonMesh>::vertex_descriptor, std::size_t>
+      index;
+  Triangle_soup soup;
+  for (auto f : group) {
+    std::vector<std::size_t> triangle;
+    for (auto v : vertices_around_face(halfedge(f, pm), pm)) {
+      auto at = index.emplace(v, soup.points.size());
+      if (at.second) {
+        const Vec3 p = to_array(get(vpm, v));
+        soup.points.emplace_back(p[0], p[1], p[2]);
+      }
+      triangle.push_back(at.first->second);
+    }
+    soup.polygons.push_back(std::move(triangle));
+  }
+  return soup;
+}
+
+/// Adds the triangles of `soup` (a closed part, possibly pinched at a vertex) to `pm`, with
+/// vertices of their own. A face that cannot be added yet (it would make a vertex non-manifold
+/// until its neighbours are in) is tried again after the others. Returns false, with nothing
+/// added, when some face cannot be added at all.
+template <class PolygonMesh, class VertexPointMap>
+bool add_soup(PolygonMesh& pm, VertexPointMap vpm, const Triangle_soup& soup) {
+  using Point = typename boost::property_traits<VertexPointMap>::value_type;
+  using vertex_descriptor = typename boost::graph_traits<PolygonMesh>::vertex_descriptor;
+  using face_descriptor = typename boost::graph_traits<PolygonMesh>::face_descriptor;
+  std::vector<vertex_descriptor> vertices;
+  vertices.reserve(soup.points.size());
+  for (const auto& p : soup.points) {
+    vertices.push_back(add_vertex(pm));
+    put(vpm, vertices.back(), Point(p.x(), p.y(), p.z()));
+  }
+  std::vector<face_descriptor> added;
+  std::vector<std::size_t> waiting(soup.polygons.size());
+  std::iota(waiting.begin(), waiting.end(), std::size_t(0));
+  while (!waiting.empty()) {
+    std::vector<std::size_t> failed;
+    for (std::size_t i : waiting) {
+      const auto& t = soup.polygons[i];
+      const face_descriptor f = CGAL::Euler::add_face(
+          std::array<vertex_descriptor, 3>{vertices[t[0]], vertices[t[1]], vertices[t[2]]}, pm);
+      if (f == boost::graph_traits<PolygonMesh>::null_face())
+        failed.push_back(i);
+      else
+        added.push_back(f);
+    }
+    if (failed.size() == waiting.size()) break;
+    waiting = std::move(failed);
+  }
+  if (waiting.empty()) return true;
+  for (face_descriptor f : added) CGAL::Euler::remove_face(halfedge(f, pm), pm);
+  for (vertex_descriptor v : vertices)
+    if (halfedge(v, pm) == boost::graph_traits<PolygonMesh>::null_halfedge()) remove_vertex(v, pm);
+  return false;
+}
+
+/// True when the faces `f` and `g` lie in one plane (exact orientation predicate). CGAL 5.5's
+/// corefinement can crash on coplanar faces of two parts (a null dereference in its coplanar
+/// case, found on a furniture model), so such parts are not merged.
+template <class PolygonMesh, class VertexPointMap, class GeomTraits>
+bool coplanar_faces(const PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
+                    typename boost::graph_traits<PolygonMesh>::face_descriptor f,
+                    typename boost::graph_traits<PolygonMesh>::face_descriptor g) {
+  std::vector<typename boost::property_traits<VertexPointMap>::value_type> plane;
+  for (auto v : vertices_around_face(halfedge(f, pm), pm)) plane.push_back(get(vpm, v));
+  const auto orientation = traits.orientation_3_object();
+  for (auto v : vertices_around_face(halfedge(g, pm), pm))
+    if (orientation(plane[0], plane[1], plane[2], get(vpm, v)) != CGAL::COPLANAR) return false;
+  return true;
+}
+
+/// True when no face of `part` has a border edge.
+template <class PolygonMesh, class FaceRange>
+bool part_is_closed(const PolygonMesh& pm, const FaceRange& part) {
+  for (auto f : part)
+    for (auto h : halfedges_around_face(halfedge(f, pm), pm))
+      if (is_border(opposite(h, pm), pm)) return false;
+  return true;
+}
+
+/// The faces of every component, by the component numbers of `component`.
+template <class PolygonMesh, class ComponentMap>
+std::vector<std::vector<typename boost::graph_traits<PolygonMesh>::face_descriptor>>
+faces_by_component(const PolygonMesh& pm, const ComponentMap& component) {
+  std::size_t components = 0;
+  for (const auto& c : component) components = std::max(components, c.second + 1);
+  std::vector<std::vector<typename boost::graph_traits<PolygonMesh>::face_descriptor>> faces_of(
+      components);
+  for (auto f : faces(pm)) faces_of[component.at(f)].push_back(f);
+  return faces_of;
+}
+
+/// The components (by `component`) where three faces intersect one another pairwise, according
+/// to `pairs`: there the intersection curves may cross inside a face, which CGAL 5.5's
+/// autorefinement does not handle (it throws, or on symmetric inputs crashes).
+template <class PairRange, class ComponentMap>
+std::set<std::size_t> components_with_triple_intersections(const PairRange& pairs,
+                                                           const ComponentMap& component) {
+  using face_descriptor = typename std::decay_t<decltype(pairs.begin()->first)>;
+  std::unordered_map<face_descriptor, std::unordered_set<face_descriptor>> crossing;
+  for (const auto& pair : pairs) {
+    crossing[pair.first].insert(pair.second);
+    crossing[pair.second].insert(pair.first);
+  }
+  std::set<std::size_t> found;
+  for (const auto& pair : pairs) {
+    const auto& second = crossing[pair.second];
+    for (face_descriptor third : crossing[pair.first])
+      if (third != pair.second && second.count(third)) {
+        found.insert(component.at(pair.first));
+        break;
+      }
+  }
+  return found;
+}
+
+/// Closed parts that still intersect themselves are replaced by their autorefinement
+/// (`remove_self_intersections_of_solid`), within the bounds above. Parts with coplanar
+/// intersecting faces or three faces intersecting pairwise are left as they are: CGAL 5.5's
+/// corefinement does not handle them reliably. Returns the number of parts replaced.
+template <class PolygonMesh, class VertexPointMap, class GeomTraits, class PairRange>
+std::size_t autorefine_self_intersecting_parts(PolygonMesh& pm, VertexPointMap vpm,
+                                               const GeomTraits& traits, const PairRange& pairs,
+                                               Step_timer& timer) {
+  const auto component = face_components(pm);
+  std::set<std::size_t> candidates;
+  std::set<std::size_t> degenerate = components_with_triple_intersections(pairs, component);
+  for (const auto& pair : pairs) {
+    candidates.insert(component.at(pair.first));
+    if (coplanar_faces(pm, vpm, traits, pair.first, pair.second))
+      degenerate.insert(component.at(pair.first));
+  }
+  const auto faces_of = faces_by_component(pm, component);
+  double area_budget = max_autorefined_area_fraction *
+                       CGAL::Polygon_mesh_processing::area(
+                           pm, CGAL::parameters::vertex_point_map(vpm).geom_traits(traits));
+  const double distance_bound = max_autorefined_distance_fraction * mesh_bbox_diagonal(pm, vpm);
+  std::size_t replaced = 0, refused = 0, removed = 0, added = 0, open = 0;
+  double area_removed = 0;
+  std::string last_reason;
+  for (std::size_t c : candidates) {
+    if (degenerate.count(c)) continue;
+    if (!part_is_closed(pm, faces_of[c])) {
+      ++open;
+      continue;
+    }
+    Triangle_soup refined;
+    Solid_autorefinement measures;
+    std::string why =
+        remove_self_intersections_of_solid(soup_of_faces(pm, vpm, faces_of[c]), refined, measures);
+    const double area_lost = measures.area_before - measures.area_after;
+    if (why.empty() && area_lost > area_budget)
+      why = "it would remove more than " +
+            std::to_string(int(100 * max_autorefined_area_fraction)) + "% of the mesh's area";
+    if (why.empty() && measures.largest_distance > distance_bound)
+      why = "a point would move farther than " +
+            std::to_string(int(1000 * max_autorefined_distance_fraction)) +
+            " per mille of the diagonal";
+    if (!why.empty()) {
+      ++refused;
+      last_reason = why;
+      continue;
+    }
+    if (!add_soup(pm, vpm, refined)) {
+      ++refused;
+      last_reason = "its autorefinement cannot be put in the mesh";
+      continue;
+    }
+    area_budget -= std::max(0.0, area_lost);
+    for (auto f : faces_of[c]) CGAL::Euler::remove_face(halfedge(f, pm), pm);
+    removed += faces_of[c].size();
+    added += refined.polygons.size();
+    area_removed += area_lost;
+    ++replaced;
+  }
+  timer.count("parts_autorefined", double(replaced));
+  timer.count("autorefined_faces_removed", double(removed));
+  timer.count("autorefined_faces_added", double(added));
+  timer.count("autorefined_area_removed", area_removed);
+  if (!degenerate.empty())
+    timer.step().notes.push_back(std::to_string(degenerate.size()) +
+                                 " self-intersecting part(s) with coplanar intersecting faces or "
+                                 "three faces intersecting one another not autorefined (CGAL "
+                                 "5.5's corefinement does not handle them reliably)");
+  if (open > 0)
+    timer.step().notes.push_back(std::to_string(open) +
+                                 " self-intersecting open part(s) not autorefined (only a closed "
+                                 "part has an inside to remove)");
+  if (refused > 0)
+    timer.step().notes.push_back(
+        std::to_string(refused) +
+        " self-intersecting closed part(s) not autorefined (last: " + last_reason + ")");
+  return replaced;
+}
+
 /// Self-intersections inside one connected component are removed: the intersecting faces and
 /// the faces within 1, then 2 vertex rings are replaced by checked patches (Region_replacer),
 /// all or nothing per region. Intersections between two components (an assembly of touching
@@ -627,33 +833,34 @@ void step_remove_self_intersections(PolygonMesh& pm, VertexPointMap vpm, const G
   auto pairs = within_component_pairs(between);
   timer.count("pairs_within_components_before", double(pairs.size()));
   timer.count("pairs_between_components_kept", double(between));
+  // Closed parts first: their autorefinement keeps the surface as it is outside the volume,
+  // where region replacement would cut a part that crosses itself and cap the ends.
+  if (!pairs.empty() && autorefine_self_intersecting_parts(pm, vpm, traits, pairs, timer) > 0)
+    pairs = within_component_pairs(between);
   std::unordered_set<face_descriptor> involved;
   for (const auto& pair : pairs) involved.insert({pair.first, pair.second});
-  if (double(involved.size()) > max_self_intersecting_face_fraction * double(count_faces(pm))) {
+  Region_replacement_report total;
+  if (double(involved.size()) > max_self_intersecting_face_fraction * double(count_faces(pm)))
     timer.step().notes.push_back(std::to_string(involved.size()) +
                                  " self-intersecting faces, over " +
                                  std::to_string(int(100 * max_self_intersecting_face_fraction)) +
-                                 "% of the faces: not removed");
-    timer.count("pairs_within_components_after", double(pairs.size()));
-    result.self_intersections_between_components = between;
-    return;
-  }
-  Region_replacement_report total;
-  for (int rings = 1; rings <= max_self_intersection_rings && !pairs.empty(); ++rings) {
-    if (!visitor.progress(0.5 * (rings - 1))) {
-      result.cancelled = true;
-      break;
+                                 "% of the faces: not replaced by patches");
+  else
+    for (int rings = 1; rings <= max_self_intersection_rings && !pairs.empty(); ++rings) {
+      if (!visitor.progress(0.5 * (rings - 1))) {
+        result.cancelled = true;
+        break;
+      }
+      std::vector<std::vector<face_descriptor>> regions;
+      for (const auto& pair : pairs) {
+        std::vector<vertex_descriptor> seeds;
+        for (face_descriptor f : {pair.first, pair.second})
+          for (vertex_descriptor v : vertices_around_face(halfedge(f, pm), pm)) seeds.push_back(v);
+        regions.push_back(faces_within_rings(pm, seeds, rings));
+      }
+      replace_regions(pm, vpm, traits, options, visitor, regions, total);
+      pairs = within_component_pairs(between);
     }
-    std::vector<std::vector<face_descriptor>> regions;
-    for (const auto& pair : pairs) {
-      std::vector<vertex_descriptor> seeds;
-      for (face_descriptor f : {pair.first, pair.second})
-        for (vertex_descriptor v : vertices_around_face(halfedge(f, pm), pm)) seeds.push_back(v);
-      regions.push_back(faces_within_rings(pm, seeds, rings));
-    }
-    replace_regions(pm, vpm, traits, options, visitor, regions, total);
-    pairs = within_component_pairs(between);
-  }
   timer.count("regions_replaced", double(total.regions_replaced));
   timer.count("faces_removed", double(total.faces_removed));
   timer.count("faces_added", double(total.faces_added));
@@ -665,59 +872,6 @@ void step_remove_self_intersections(PolygonMesh& pm, VertexPointMap vpm, const G
                                  " face(s) of regions that could not be refilled could not be put "
                                  "back");
   }
-}
-
-/// The faces of `group` as a triangle soup of the core's points (`union_of_solids`).
-template <class PolygonMesh, class VertexPointMap, class FaceRange>
-Triangle_soup soup_of_faces(const PolygonMesh& pm, VertexPointMap vpm, const FaceRange& group) {
-  std::unordered_map<typename boost::graph_traits<PolygonMesh>::vertex_descriptor, std::size_t>
-      index;
-  Triangle_soup soup;
-  for (auto f : group) {
-    std::vector<std::size_t> triangle;
-    for (auto v : vertices_around_face(halfedge(f, pm), pm)) {
-      auto at = index.emplace(v, soup.points.size());
-      if (at.second) {
-        const Vec3 p = to_array(get(vpm, v));
-        soup.points.emplace_back(p[0], p[1], p[2]);
-      }
-      triangle.push_back(at.first->second);
-    }
-    soup.polygons.push_back(std::move(triangle));
-  }
-  return soup;
-}
-
-/// Adds the triangles of `soup` to `pm`, with vertices of their own (a union is a closed
-/// manifold mesh, so every face can be added).
-template <class PolygonMesh, class VertexPointMap>
-void add_soup(PolygonMesh& pm, VertexPointMap vpm, const Triangle_soup& soup) {
-  using Point = typename boost::property_traits<VertexPointMap>::value_type;
-  using vertex_descriptor = typename boost::graph_traits<PolygonMesh>::vertex_descriptor;
-  std::vector<vertex_descriptor> vertices;
-  vertices.reserve(soup.points.size());
-  for (const auto& p : soup.points) {
-    vertices.push_back(add_vertex(pm));
-    put(vpm, vertices.back(), Point(p.x(), p.y(), p.z()));
-  }
-  for (const auto& t : soup.polygons)
-    CGAL::Euler::add_face(
-        std::array<vertex_descriptor, 3>{vertices[t[0]], vertices[t[1]], vertices[t[2]]}, pm);
-}
-
-/// True when the faces `f` and `g` lie in one plane (exact orientation predicate). CGAL 5.5's
-/// corefinement can crash on coplanar faces of two parts (a null dereference in its coplanar
-/// case, found on a furniture model), so such parts are not merged.
-template <class PolygonMesh, class VertexPointMap, class GeomTraits>
-bool coplanar_faces(const PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
-                    typename boost::graph_traits<PolygonMesh>::face_descriptor f,
-                    typename boost::graph_traits<PolygonMesh>::face_descriptor g) {
-  std::vector<typename boost::property_traits<VertexPointMap>::value_type> plane;
-  for (auto v : vertices_around_face(halfedge(f, pm), pm)) plane.push_back(get(vpm, v));
-  const auto orientation = traits.orientation_3_object();
-  for (auto v : vertices_around_face(halfedge(g, pm), pm))
-    if (orientation(plane[0], plane[1], plane[2], get(vpm, v)) != CGAL::COPLANAR) return false;
-  return true;
 }
 
 /// With `merge_intersecting_solids`, closed parts that intersect one another (an assembly of
@@ -746,8 +900,7 @@ void step_merge_intersecting_solids(PolygonMesh& pm, VertexPointMap vpm, const G
     linked.unify_sets(handle[a], handle[b]);
     if (coplanar_faces(pm, vpm, traits, pair.first, pair.second)) coplanar[a] = true;
   }
-  std::vector<std::vector<face_descriptor>> faces_of(components);
-  for (face_descriptor f : faces(pm)) faces_of[component.at(f)].push_back(f);
+  const auto faces_of = faces_by_component(pm, component);
   std::map<std::size_t, std::vector<std::size_t>> groups;  // by the group's first part
   for (std::size_t c = 0; c < components; ++c)
     if (involved[c]) groups[*linked.find(handle[c])].push_back(c);
@@ -767,11 +920,17 @@ void step_merge_intersecting_solids(PolygonMesh& pm, VertexPointMap vpm, const G
                                    " intersecting parts kept apart: " + why);
       continue;
     }
+    if (!add_soup(pm, vpm, united)) {
+      ++refused;
+      timer.step().notes.push_back(std::to_string(group.second.size()) +
+                                   " intersecting parts kept apart: their union cannot be put in "
+                                   "the mesh");
+      continue;
+    }
     for (std::size_t c : group.second) {
       for (face_descriptor f : faces_of[c]) CGAL::Euler::remove_face(halfedge(f, pm), pm);
       removed += faces_of[c].size();
     }
-    add_soup(pm, vpm, united);
     added += united.polygons.size();
     merged += group.second.size();
     ++unions;

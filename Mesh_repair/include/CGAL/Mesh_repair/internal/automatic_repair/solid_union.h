@@ -3,11 +3,12 @@
 #ifndef CGAL_MESH_REPAIR_INTERNAL_AUTOMATIC_REPAIR_SOLID_UNION_H
 #define CGAL_MESH_REPAIR_INTERNAL_AUTOMATIC_REPAIR_SOLID_UNION_H
 
-// The union of closed parts that intersect one another (an assembly of touching or
-// interpenetrating solids), by CGAL's corefinement. automatic_repair keeps such parts as separate
-// solids unless asked to merge them (`merge_intersecting_solids`). The solids travel as triangle
-// soups of doubles so that CGAL's corefinement is compiled once, on the core's Surface_mesh, for
-// every mesh type of the caller.
+// CGAL's corefinement on closed parts: the union of parts that intersect one another (an
+// assembly of touching or interpenetrating solids; automatic_repair keeps such parts as separate
+// solids unless asked to merge them, `merge_intersecting_solids`), and the autorefinement of one
+// part that intersects itself (the faces inside its volume removed). The solids travel as
+// triangle soups of doubles so that CGAL's corefinement is compiled once, on the core's
+// Surface_mesh, for every mesh type of the caller.
 
 #include <CGAL/Mesh_repair/internal/compiled_core.h>
 #include <CGAL/Mesh_repair/internal/core_inline.h>
@@ -29,6 +30,23 @@ using Triangle_soup = Polygon_soup<Core_traits::Point_3>;
 /// union was not computed (then `out` is unspecified).
 CGAL_MESH_REPAIR_CORE_INLINE std::string union_of_solids(const std::vector<Triangle_soup>& solids,
                                                          Triangle_soup& out);
+
+/// What `remove_self_intersections_of_solid` did to a part.
+struct Solid_autorefinement {
+  double area_before = 0;
+  double area_after = 0;
+  /// Largest distance from a point of the part to the result.
+  double largest_distance = 0;
+};
+
+/// Writes into `out` the closed part `solid` (a closed triangle mesh that may intersect itself)
+/// with its self-intersections removed by CGAL's
+/// `experimental::autorefine_and_remove_self_intersections`: the faces are cut along the
+/// intersections and the pieces inside the volume removed. An inward part is turned outward
+/// first. Returns an empty string when the result is closed, valid, free of self-intersections
+/// and bounds a volume, else why not (then `out` is unspecified).
+CGAL_MESH_REPAIR_CORE_INLINE std::string remove_self_intersections_of_solid(
+    const Triangle_soup& solid, Triangle_soup& out, Solid_autorefinement& measures);
 
 }  // namespace internal
 }  // namespace Mesh_repair

@@ -6,6 +6,9 @@
 #include <CGAL/Mesh_repair/internal/automatic_repair/solid_union.h>
 
 #include <CGAL/Polygon_mesh_processing/corefinement.h>
+#include <CGAL/Polygon_mesh_processing/distance.h>
+#include <CGAL/Polygon_mesh_processing/manifoldness.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -18,9 +21,8 @@ namespace internal {
 
 namespace solid_union {
 
-/// `soup` as a mesh; an empty string, or why it is not a solid that corefinement accepts.
-inline std::string to_solid(const Triangle_soup& soup, Core_mesh& mesh) {
-  namespace PMP = CGAL::Polygon_mesh_processing;
+/// `soup` as a closed mesh; an empty string, or why it is not one.
+inline std::string to_closed_mesh(const Triangle_soup& soup, Core_mesh& mesh) {
   std::vector<Core_mesh::Vertex_index> vertices;
   vertices.reserve(soup.points.size());
   for (const auto& p : soup.points) vertices.push_back(mesh.add_vertex(p));
@@ -29,6 +31,14 @@ inline std::string to_solid(const Triangle_soup& soup, Core_mesh& mesh) {
         mesh.add_face(vertices[t[0]], vertices[t[1]], vertices[t[2]]) == Core_mesh::null_face())
       return "a part is not a manifold triangle mesh";
   if (!CGAL::is_closed(mesh)) return "a part is not closed";
+  return {};
+}
+
+/// `soup` as a mesh; an empty string, or why it is not a solid that corefinement accepts.
+inline std::string to_solid(const Triangle_soup& soup, Core_mesh& mesh) {
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  const std::string why = to_closed_mesh(soup, mesh);
+  if (!why.empty()) return why;
   if (PMP::does_self_intersect(mesh)) return "a part intersects itself";
   // An inward part (the soup's orientation is only consistent) is turned outward.
   PMP::orient_to_bound_a_volume(mesh);
@@ -36,7 +46,11 @@ inline std::string to_solid(const Triangle_soup& soup, Core_mesh& mesh) {
   return {};
 }
 
-inline void to_soup(const Core_mesh& mesh, Triangle_soup& soup) {
+/// `mesh` as a soup; where the surface touches itself at a vertex (two fans of faces around one
+/// vertex, which corefinement can leave), each fan gets a point of its own, so that the soup can
+/// be rebuilt face by face.
+inline void to_soup(Core_mesh& mesh, Triangle_soup& soup) {
+  CGAL::Polygon_mesh_processing::duplicate_non_manifold_vertices(mesh);
   soup = Triangle_soup();
   std::vector<std::size_t> index(mesh.number_of_vertices() + mesh.number_of_removed_vertices());
   for (auto v : mesh.vertices()) {
@@ -73,6 +87,33 @@ CGAL_MESH_REPAIR_CORE_INLINE std::string union_of_solids(const std::vector<Trian
     merged = std::move(result);
   }
   solid_union::to_soup(merged, out);
+  return {};
+}
+
+CGAL_MESH_REPAIR_CORE_INLINE std::string remove_self_intersections_of_solid(
+    const Triangle_soup& solid, Triangle_soup& out, Solid_autorefinement& measures) {
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  Core_mesh mesh;
+  std::string why = solid_union::to_closed_mesh(solid, mesh);
+  if (!why.empty()) return why;
+  const Core_mesh before = mesh;
+  measures.area_before = PMP::area(mesh);
+  try {
+    // The pieces kept are those outside the volume as the faces' orientation defines it.
+    if (!PMP::is_outward_oriented(mesh)) PMP::reverse_face_orientations(mesh);
+    if (!PMP::experimental::autorefine_and_remove_self_intersections(mesh))
+      return "CGAL's autorefinement could not remove them all";
+  } catch (const std::exception& e) {
+    return std::string("CGAL's autorefinement failed: ") + e.what();
+  }
+  if (mesh.is_empty() || !CGAL::is_closed(mesh) || !mesh.is_valid(false))
+    return "CGAL's autorefinement left an open or invalid part";
+  if (PMP::does_self_intersect(mesh)) return "CGAL's autorefinement left self-intersections";
+  if (!PMP::does_bound_a_volume(mesh)) return "the autorefined part bounds no volume";
+  measures.area_after = PMP::area(mesh);
+  measures.largest_distance =
+      PMP::max_distance_to_triangle_mesh<CGAL::Sequential_tag>(before.points(), mesh);
+  solid_union::to_soup(mesh, out);
   return {};
 }
 
