@@ -307,6 +307,90 @@ TEST(AutomaticRepair, SelfIntersectionsBetweenComponentsAreKept) {
   EXPECT_NE(result.kept[0].find("between separate components"), std::string::npos);
 }
 
+/// A closed tube of radius `radius` around a figure-eight (Gerono's lemniscate x = sin t,
+/// y = sin t cos t, z = 0): one connected part that crosses itself once, at the origin.
+Mesh figure_eight_tube(double radius, int rings, int sides) {
+  const double pi = std::acos(-1.0);
+  Mesh mesh;
+  std::vector<Mesh::Vertex_index> v;
+  for (int i = 0; i < rings; ++i) {
+    const double t = 2 * pi * (i + 0.5) / rings;  // no ring centred on the crossing
+    const double tx = std::cos(t), ty = std::cos(2 * t), norm = std::hypot(tx, ty);
+    for (int j = 0; j < sides; ++j) {
+      const double a = 2 * pi * j / sides, side = radius * std::cos(a);
+      v.push_back(mesh.add_vertex(Point(std::sin(t) + side * ty / norm,
+                                        std::sin(t) * std::cos(t) - side * tx / norm,
+                                        radius * std::sin(a))));
+    }
+  }
+  for (int i = 0; i < rings; ++i)
+    for (int j = 0; j < sides; ++j) {
+      const auto at = [&](int r, int s) { return v[(r % rings) * sides + s % sides]; };
+      mesh.add_face(at(i, j), at(i + 1, j), at(i + 1, j + 1));
+      mesh.add_face(at(i, j), at(i + 1, j + 1), at(i, j + 1));
+    }
+  return mesh;
+}
+
+// A thin closed tube that crosses itself (a swept part of a CAD model): the autorefinement keeps
+// its surface outside the volume, so the result is one closed part without the pieces inside
+// the crossing, where replacing the crossing by patches would cut the tube and cap the ends.
+TEST(AutomaticRepair, AClosedPartCrossingItselfKeepsItsSurfaceOutsideTheVolume) {
+  Mesh mesh = figure_eight_tube(0.004, 400, 8);
+  ASSERT_TRUE(CGAL::is_closed(mesh));
+  ASSERT_GT(self_intersection_count(mesh), 0u);
+  const Mesh input = mesh;
+  const auto result = MR::automatic_repair(mesh);
+  EXPECT_EQ(result.status(), MR::Repair_status::complete)
+      << (result.remaining.empty() ? "" : result.remaining.front());
+  EXPECT_EQ(self_intersection_count(mesh), 0u);
+  EXPECT_TRUE(CGAL::is_closed(mesh));
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  EXPECT_EQ(support::connected_components(mesh), 1u);
+  const double area_before = support::area(input), area_after = support::area(mesh);
+  EXPECT_LT(area_after, area_before);
+  EXPECT_GT(area_after, 0.99 * area_before);
+  // The output lies on the input's surface, and the input's points are within one tube radius.
+  EXPECT_LT(support::max_distance_to(mesh, input), 1e-9);
+  std::vector<Point> points(input.points().begin(), input.points().end());
+  EXPECT_LT(support::max_distance_to_triangle_mesh(points, mesh), 0.004 + 1e-9);
+  const auto* step = find_step(result, "self-intersection removal");
+  ASSERT_NE(step, nullptr);
+  EXPECT_EQ(step->count("parts_autorefined"), 1.0);
+}
+
+// A spindle torus (tube radius above the sweep radius) meshed symmetrically: near its axis many
+// faces cross pairwise in threes, where CGAL 5.5's autorefinement throws or crashes. The part is
+// not autorefined, the note says why, and the repair ends with a valid mesh.
+TEST(AutomaticRepair, APartWithTripleIntersectionsIsNotAutorefined) {
+  const double pi = std::acos(-1.0);
+  Mesh mesh;
+  const int around = 48, across = 24;
+  std::vector<Mesh::Vertex_index> v;
+  for (int i = 0; i < around; ++i)
+    for (int j = 0; j < across; ++j) {
+      const double u = 2 * pi * i / around, w = 2 * pi * j / across;
+      v.push_back(mesh.add_vertex(Point((0.98 + std::cos(w)) * std::cos(u),
+                                        (0.98 + std::cos(w)) * std::sin(u), std::sin(w))));
+    }
+  const auto at = [&](int i, int j) { return v[(i % around) * across + j % across]; };
+  for (int i = 0; i < around; ++i)
+    for (int j = 0; j < across; ++j) {
+      mesh.add_face(at(i, j), at(i + 1, j), at(i + 1, j + 1));
+      mesh.add_face(at(i, j), at(i + 1, j + 1), at(i, j + 1));
+    }
+  ASSERT_GT(self_intersection_count(mesh), 0u);
+  const auto result = MR::automatic_repair(mesh);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  const auto* step = find_step(result, "self-intersection removal");
+  ASSERT_NE(step, nullptr);
+  EXPECT_EQ(step->count("parts_autorefined"), 0.0);
+  const bool noted = std::any_of(step->notes.begin(), step->notes.end(), [](const std::string& n) {
+    return n.find("three faces intersecting") != std::string::npos;
+  });
+  EXPECT_TRUE(noted);
+}
+
 // Two interpenetrating spheres and a third apart, with `merge_intersecting_solids`: the two
 // become their union (one closed part, no self-intersection, the faces inside removed: its
 // volume is that of the union of the two balls), the third is untouched.
