@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -389,6 +390,52 @@ TEST(AutomaticRepair, APartWithTripleIntersectionsIsNotAutorefined) {
     return n.find("three faces intersecting") != std::string::npos;
   });
   EXPECT_TRUE(noted);
+}
+
+// A tube standing on a box, its open lower end lying on the box's top face (a part trimmed
+// against another, as in furniture and railing models): every patch of that end touches the
+// box, so no method can fill it with the box an obstacle. The hole is filled once more with the
+// other part no obstacle: the tube is closed, the contact between the two parts is kept and
+// counted, and no pair is added inside a part.
+TEST(AutomaticRepair, AnOpenEndLyingOnAnotherPartIsClosedAndTheContactKept) {
+  const double pi = std::acos(-1.0);
+  Mesh mesh;
+  MR::make_subdivided_cube<Mesh, Point>(mesh, 2.0, 4);
+  const std::size_t box_faces = mesh.number_of_faces();
+  double top = -std::numeric_limits<double>::infinity();
+  for (auto v : mesh.vertices()) top = std::max(top, mesh.point(v).z());
+  const int sides = 24, rings = 6;
+  std::vector<Mesh::Vertex_index> v;
+  for (int i = 0; i <= rings; ++i)
+    for (int j = 0; j < sides; ++j)
+      v.push_back(mesh.add_vertex(Point(1 + 0.3 * std::cos(2 * pi * j / sides),
+                                        1 + 0.3 * std::sin(2 * pi * j / sides), top + i * 0.2)));
+  const auto apex = mesh.add_vertex(Point(1, 1, top + rings * 0.2 + 0.1));
+  const auto at = [&](int i, int j) { return v[i * sides + j % sides]; };
+  for (int i = 0; i < rings; ++i)
+    for (int j = 0; j < sides; ++j) {
+      mesh.add_face(at(i, j), at(i, j + 1), at(i + 1, j + 1));
+      mesh.add_face(at(i, j), at(i + 1, j + 1), at(i + 1, j));
+    }
+  for (int j = 0; j < sides; ++j) mesh.add_face(at(rings, j), at(rings, j + 1), apex);
+  ASSERT_EQ(count_border_cycles(mesh), 1u);
+  const auto result = MR::automatic_repair(mesh);
+  EXPECT_EQ(result.status(), MR::Repair_status::complete_except_kept)
+      << (result.remaining.empty() ? "" : result.remaining.front());
+  EXPECT_EQ(result.holes.filled, 1u);
+  EXPECT_EQ(result.holes.failed, 0u);
+  EXPECT_TRUE(CGAL::is_closed(mesh));
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  EXPECT_EQ(support::connected_components(mesh), 2u);
+  EXPECT_EQ(result.self_intersections_in_patches, 0u);
+  EXPECT_GT(result.self_intersections_between_components, 0u);
+  EXPECT_GE(mesh.number_of_faces(), box_faces + 2 * sides * rings + sides + 1);
+  const auto* step = find_step(result, "failed holes filled against other parts");
+  ASSERT_NE(step, nullptr);
+  EXPECT_EQ(step->count("filled"), 1.0);
+  const auto* verification = find_step(result, "verification");
+  ASSERT_NE(verification, nullptr);
+  EXPECT_GT(verification->count("pairs_between_components_added"), 0.0);
 }
 
 // Two interpenetrating spheres and a third apart, with `merge_intersecting_solids`: the two

@@ -229,7 +229,7 @@ class Hole_filler {
         check_(options.check_self_intersections),
         options_(options),
         visitor_(visitor),
-        near_faces_(pm, vpm) {}
+        near_faces_(pm, vpm, options.other_parts_are_obstacles) {}
 
   Hole_description describe(const Group& group) const {
     Hole_description d;

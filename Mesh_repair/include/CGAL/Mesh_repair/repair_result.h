@@ -56,9 +56,13 @@ struct Repair_result {
   std::size_t output_vertices = 0, output_faces = 0;
   std::size_t components_removed = 0;  ///< only with `keep_largest_component`
   std::size_t faces_removed_with_components = 0;
-  std::size_t self_intersections_input = 0;       ///< pairs, when detection was asked
-  std::size_t self_intersections_output = 0;      ///< pairs, when detection was asked
-  std::size_t self_intersections_in_patches = 0;  ///< pairs involving a patch or its ring
+  std::size_t self_intersections_input = 0;  ///< pairs, when detection was asked
+  /// Of the input's pairs, those between two connected components.
+  std::size_t self_intersections_input_between_components = 0;
+  std::size_t self_intersections_output = 0;  ///< pairs, when detection was asked
+  /// Pairs inside the parts beyond the input's (pairs between parts that a patch closing one
+  /// part against another adds are counted with the pairs between components).
+  std::size_t self_intersections_in_patches = 0;
   /// Of the output's pairs, those between two connected components (an assembly of solids):
   /// kept on purpose (listed in `kept`), counted by the self-intersection removal step.
   std::size_t self_intersections_between_components = 0;
@@ -117,6 +121,8 @@ inline void write_json(Json_writer& json, const Repair_result& r) {
       .field("sheet_borders_left_open", r.sheet_borders_left_open)
       .field("self_intersections_checked", r.self_intersections_checked)
       .field("self_intersections_input", r.self_intersections_input)
+      .field("self_intersections_input_between_components",
+             r.self_intersections_input_between_components)
       .field("self_intersections_output", r.self_intersections_output)
       .field("self_intersections_in_patches", r.self_intersections_in_patches)
       .field("self_intersections_between_components", r.self_intersections_between_components)

@@ -85,6 +85,10 @@ struct Fill_options {
   std::function<bool(const Hole_description&)> hole_filter;  ///< empty: every hole
   bool detect_ring_holes = true;
   bool check_self_intersections = true;
+  /// False: a patch may meet other connected components (a tube trimmed against a post, its
+  /// open end lying on the post's face); its own component, itself and earlier patches of its
+  /// component stay obstacles. automatic_repair retries the holes no method could fill so.
+  bool other_parts_are_obstacles = true;
   int number_of_threads = 0;  ///< 0: TBB's default
   Advancing_front_options advancing_front;
   Liepa_options liepa;

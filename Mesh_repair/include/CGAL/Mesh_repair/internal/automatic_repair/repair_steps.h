@@ -39,6 +39,7 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <tuple>
 #include <unordered_map>
 #include <unordered_set>
 #include <vector>
@@ -130,6 +131,22 @@ std::size_t count_self_intersections(const PolygonMesh& pm) {
   CGAL::Polygon_mesh_processing::self_intersections<CGAL::Sequential_tag>(
       pm, std::back_inserter(pairs));
   return pairs.size();
+}
+
+/// The pairs of intersecting faces of `pm`, all and those between two connected components.
+template <class PolygonMesh>
+std::pair<std::size_t, std::size_t> self_intersection_census(const PolygonMesh& pm);
+
+/// Pairs inside the parts that the repair added, from the counts of `result`.
+inline std::size_t pairs_added_within_parts(const Repair_result& result) {
+  const auto within = [](std::size_t all, std::size_t between) {
+    return all - std::min(all, between);
+  };
+  const std::size_t before =
+      within(result.self_intersections_input, result.self_intersections_input_between_components);
+  const std::size_t after =
+      within(result.self_intersections_output, result.self_intersections_between_components);
+  return after > before ? after - before : 0;
 }
 
 template <class PolygonMesh>
@@ -557,6 +574,59 @@ void step_grow_failed_holes(PolygonMesh& pm, VertexPointMap vpm, const GeomTrait
   }
 }
 
+/// The holes still open are filled once more with other connected components no obstacle
+/// (`Fill_options::other_parts_are_obstacles`): a tube trimmed against a post has its open end
+/// on the post's face, where every patch touches the post. The patch still may not meet its own
+/// part; the contact between the two parts is kept like any other (counted in the
+/// verification as `pairs_between_components_added`, listed in `kept`), and
+/// `merge_intersecting_solids` can then unite the closed parts.
+template <class PolygonMesh, class VertexPointMap, class GeomTraits, class Point>
+void step_fill_meeting_other_parts(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
+                                   const Repair_options& options,
+                                   const std::vector<Point>& border_points, Any_visitor visitor,
+                                   Repair_result& result) {
+  std::map<Point, std::size_t> failed_at;  // a border point of each hole still open
+  for (std::size_t k = 0; k < result.holes.holes.size(); ++k)
+    if (!result.holes.holes[k].filled && !result.holes.holes[k].skipped)
+      failed_at.emplace(border_points[k], k);
+  if (failed_at.empty()) return;
+  Step_timer timer(result, "failed holes filled against other parts", visitor);
+  const auto groups = hole_groups(pm, vpm, options.fill.detect_ring_holes);
+  std::vector<typename decltype(groups)::value_type> retried;
+  std::vector<std::size_t> hole_of;
+  for (const auto& group : groups)
+    for (auto h : halfedges_around_face(group.outer, pm)) {
+      const auto found = failed_at.find(get(vpm, target(h, pm)));
+      if (found == failed_at.end()) continue;
+      retried.push_back(group);
+      hole_of.push_back(found->second);
+      failed_at.erase(found);
+      break;
+    }
+  Fill_options fill = options.fill;
+  fill.other_parts_are_obstacles = false;
+  std::vector<Fill_patch<PolygonMesh>> patches;
+  const Fill_result again =
+      fill_hole_groups(pm, vpm, traits, retried, patches, fill, visitor, false);
+  std::size_t filled = 0;
+  for (std::size_t j = 0; j < retried.size(); ++j) {
+    if (!again.holes[j].filled) continue;
+    Hole_fill_report& hole = result.holes.holes[hole_of[j]];
+    hole.notes.push_back(
+        "filled by " + std::string(to_string(again.holes[j].used)) +
+        " with other parts no obstacle (the patch meets another part): " + hole.failure);
+    hole.failure.clear();
+    hole.filled = true;
+    hole.used = again.holes[j].used;
+    --result.holes.failed;
+    ++result.holes.filled;
+    ++filled;
+  }
+  if (again.cancelled) result.cancelled = true;
+  timer.count("holes", double(retried.size()));
+  timer.count("filled", double(filled));
+}
+
 template <class PolygonMesh, class VertexPointMap, class GeomTraits>
 void step_fill_holes(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
                      const Repair_options& options, Any_visitor visitor, Repair_result& result) {
@@ -577,7 +647,13 @@ void step_fill_holes(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& trai
     timer.count("faces_added", double(count_faces(pm)) - double(faces_before));
     timer.count("vertices_added", double(count_vertices(pm)) - double(vertices_before));
   }
+  // A border point of each hole finds it again after the growth removed and put back faces
+  // (its halfedges are then new).
+  std::vector<typename boost::property_traits<VertexPointMap>::value_type> border_points;
+  for (const auto& group : groups) border_points.push_back(get(vpm, target(group.outer, pm)));
   if (!result.cancelled) step_grow_failed_holes(pm, vpm, traits, options, groups, visitor, result);
+  if (!result.cancelled && options.fill.check_self_intersections)
+    step_fill_meeting_other_parts(pm, vpm, traits, options, border_points, visitor, result);
 }
 
 /// The connected component (by edges) of every face.
@@ -603,6 +679,17 @@ face_components(const PolygonMesh& pm) {
     ++next;
   }
   return component;
+}
+
+template <class PolygonMesh>
+std::pair<std::size_t, std::size_t> self_intersection_census(const PolygonMesh& pm) {
+  using face_descriptor = typename boost::graph_traits<PolygonMesh>::face_descriptor;
+  std::vector<std::pair<face_descriptor, face_descriptor>> pairs;
+  CGAL::Polygon_mesh_processing::self_intersections(pm, std::back_inserter(pairs));
+  const auto component = face_components(pm);
+  std::size_t between = 0;
+  for (const auto& pair : pairs) between += component.at(pair.first) != component.at(pair.second);
+  return {pairs.size(), between};
 }
 
 /// The faces of `group` as a triangle soup of the core's points (`union_of_solids`).
@@ -982,11 +1069,15 @@ void step_verify(const PolygonMesh& pm, const Repair_options& options, Repair_re
     result.holes.failed = 0;
   }
   if (options.detect_self_intersections) {
-    result.self_intersections_output = count_self_intersections(pm);
+    std::tie(result.self_intersections_output, result.self_intersections_between_components) =
+        self_intersection_census(pm);
     result.self_intersections_checked = true;
-    if (result.self_intersections_output > result.self_intersections_input)
-      result.self_intersections_in_patches =
-          result.self_intersections_output - result.self_intersections_input;
+    result.self_intersections_in_patches = pairs_added_within_parts(result);
+    if (result.self_intersections_between_components >
+        result.self_intersections_input_between_components)
+      timer.count("pairs_between_components_added",
+                  double(result.self_intersections_between_components -
+                         result.self_intersections_input_between_components));
   }
   result.output_vertices = count_vertices(pm);
   result.output_faces = count_faces(pm);
@@ -1048,8 +1139,11 @@ Repair_result run_repair_pipeline(PolygonMesh& pm, VertexPointMap vpm, const Geo
   result.input_faces = count_faces(pm);
   if (options.detect_self_intersections) {
     Step_timer timer(result, "input self-intersections", visitor);
-    result.self_intersections_input = count_self_intersections(pm);
+    std::tie(result.self_intersections_input, result.self_intersections_input_between_components) =
+        self_intersection_census(pm);
     timer.count("pairs", double(result.self_intersections_input));
+    timer.count("pairs_between_components",
+                double(result.self_intersections_input_between_components));
   }
   step_exact_stitching(pm, result, visitor);
   step_tolerance_stitching(pm, vpm, traits, options, visitor, result);

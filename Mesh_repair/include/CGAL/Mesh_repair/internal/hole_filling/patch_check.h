@@ -19,6 +19,8 @@
 #include <array>
 #include <cmath>
 #include <iterator>
+#include <type_traits>
+#include <unordered_map>
 #include <unordered_set>
 #include <utility>
 #include <vector>
@@ -136,7 +138,10 @@ class Face_box_cache {
   using vertex_descriptor = typename GT::vertex_descriptor;
 
  public:
-  Face_box_cache(const PolygonMesh& pm, VertexPointMap vpm) : pm_(pm), vpm_(vpm) {}
+  /// With `other_parts_are_obstacles` false, a query returns only faces of the connected
+  /// components of the faces it excludes (the hole's ring): a patch may then meet other parts.
+  Face_box_cache(const PolygonMesh& pm, VertexPointMap vpm, bool other_parts_are_obstacles = true)
+      : pm_(pm), vpm_(vpm), other_parts_are_obstacles_(other_parts_are_obstacles) {}
 
   /// Takes the faces of the mesh as it is now. Call it before the first patch is added: a
   /// patch present at that time would stay in the cache after a rollback removed it.
@@ -150,13 +155,29 @@ class Face_box_cache {
       boxes_.push_back(face_box(f));
     }
     build_grid();
+    number_components();
   }
 
+  /// The connected component (by edges, when the cache was built) of `f`; a kept patch belongs
+  /// to the component of the faces around it. `no_component` for a face the cache never saw.
+  std::size_t component_of(face_descriptor f) const {
+    const auto found = component_.find(f);
+    return found == component_.end() ? no_component : found->second;
+  }
+  static constexpr std::size_t no_component = std::size_t(-1);
+
   /// The faces (not in `exclude`) whose box overlaps `box`, in the order they entered the
-  /// cache (the order a scan of every box gives).
+  /// cache (the order a scan of every box gives); without `other_parts_are_obstacles`, only
+  /// those of the components of the faces of `exclude`.
   template <class FaceSet>
   std::vector<face_descriptor> overlapping(const CGAL::Bbox_3& box, const FaceSet& exclude) const {
     CGAL_precondition(built_);
+    std::unordered_set<std::size_t> parts;
+    if (!other_parts_are_obstacles_)
+      for (const auto& element : exclude) {
+        const face_descriptor f = face_of(element);
+        if (component_of(f) != no_component) parts.insert(component_of(f));
+      }
     std::vector<std::size_t> candidates;
     const std::array<std::size_t, 6> range = cell_range(box);
     for (std::size_t x = range[0]; x <= range[3]; ++x)
@@ -171,6 +192,7 @@ class Face_box_cache {
     std::vector<face_descriptor> found;
     std::unordered_set<face_descriptor> seen;  // a moved face is in the cache twice
     for (std::size_t i : candidates) {
+      if (!parts.empty() && !parts.count(component_of(faces_[i]))) continue;
       if (CGAL::do_overlap(boxes_[i], box) && exclude.count(faces_[i]) == 0 &&
           seen.insert(faces_[i]).second)
         found.push_back(faces_[i]);
@@ -183,7 +205,13 @@ class Face_box_cache {
   template <class Patch>
   void keep(const Patch& patch, const std::vector<vertex_descriptor>& moved) {
     CGAL_precondition(built_);
-    for (face_descriptor f : patch.faces) add(f);
+    std::size_t component = no_component;
+    for (face_descriptor f : patch_with_ring(pm_, patch))
+      if (component == no_component) component = component_of(f);
+    for (face_descriptor f : patch.faces) {
+      add(f);
+      component_[f] = component;
+    }
     for (vertex_descriptor v : moved) {
       if (halfedge(v, pm_) == GT::null_halfedge()) continue;
       for (face_descriptor f : faces_around_target(halfedge(v, pm_), pm_))
@@ -199,6 +227,32 @@ class Face_box_cache {
   }
 
  private:
+  /// The face of an element of an `exclude` set or map.
+  template <class Element>
+  static face_descriptor face_of(const Element& element) {
+    if constexpr (std::is_same_v<Element, face_descriptor>)
+      return element;
+    else
+      return element.first;
+  }
+
+  void number_components() {
+    std::size_t next = 0;
+    for (face_descriptor seed : faces_) {
+      if (!component_.emplace(seed, next).second) continue;
+      std::vector<face_descriptor> stack{seed};
+      while (!stack.empty()) {
+        const face_descriptor f = stack.back();
+        stack.pop_back();
+        for (auto h : halfedges_around_face(halfedge(f, pm_), pm_)) {
+          const face_descriptor g = face(opposite(h, pm_), pm_);
+          if (g != GT::null_face() && component_.emplace(g, next).second) stack.push_back(g);
+        }
+      }
+      ++next;
+    }
+  }
+
   void add(face_descriptor f) {
     faces_.push_back(f);
     boxes_.push_back(face_box(f));
@@ -241,12 +295,14 @@ class Face_box_cache {
 
   const PolygonMesh& pm_;
   VertexPointMap vpm_;
+  bool other_parts_are_obstacles_ = true;
   bool built_ = false;
   std::vector<face_descriptor> faces_;
   std::vector<CGAL::Bbox_3> boxes_;
   CGAL::Bbox_3 extent_;
   std::size_t cells_per_axis_ = 1;
   std::vector<std::vector<std::size_t>> cells_;  ///< indices into faces_/boxes_
+  std::unordered_map<face_descriptor, std::size_t> component_;
 };
 
 /// Pairs of intersecting faces with at least one patch face, among the patch, its ring and
