@@ -574,12 +574,17 @@ void step_grow_failed_holes(PolygonMesh& pm, VertexPointMap vpm, const GeomTrait
   }
 }
 
-/// The holes still open are filled once more with other connected components no obstacle
-/// (`Fill_options::other_parts_are_obstacles`): a tube trimmed against a post has its open end
-/// on the post's face, where every patch touches the post. The patch still may not meet its own
-/// part; the contact between the two parts is kept like any other (counted in the
-/// verification as `pairs_between_components_added`, listed in `kept`), and
-/// `merge_intersecting_solids` can then unite the closed parts.
+/// The connected component (by edges) of every face (defined below).
+template <class PolygonMesh>
+std::unordered_map<typename boost::graph_traits<PolygonMesh>::face_descriptor, std::size_t>
+face_components(const PolygonMesh& pm);
+
+/// The holes still open, of parts that already meet another part, are filled once more with the
+/// faces of other parts no obstacle (`Fill_options::other_parts_are_obstacles`): a tube trimmed
+/// against a post has its open end on the post's face, where every patch touches the post. The
+/// patch still may not meet its own part nor another patch; the contact between the two parts is
+/// kept like any other (counted in the verification as `pairs_between_components_added`, listed in
+/// `kept`), and `merge_intersecting_solids` can then unite the closed parts.
 template <class PolygonMesh, class VertexPointMap, class GeomTraits, class Point>
 void step_fill_meeting_other_parts(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
                                    const Repair_options& options,
@@ -591,10 +596,22 @@ void step_fill_meeting_other_parts(PolygonMesh& pm, VertexPointMap vpm, const Ge
       failed_at.emplace(border_points[k], k);
   if (failed_at.empty()) return;
   Step_timer timer(result, "failed holes filled against other parts", visitor);
+  // Only parts that already meet another part (an assembly): a patch must not create the first
+  // contact between two parts that were apart.
+  using face_descriptor = typename boost::graph_traits<PolygonMesh>::face_descriptor;
+  std::vector<std::pair<face_descriptor, face_descriptor>> pairs;
+  CGAL::Polygon_mesh_processing::self_intersections(pm, std::back_inserter(pairs));
+  const auto component = face_components(pm);
+  std::unordered_set<std::size_t> in_contact;
+  for (const auto& pair : pairs)
+    if (component.at(pair.first) != component.at(pair.second))
+      in_contact.insert({component.at(pair.first), component.at(pair.second)});
   const auto groups = hole_groups(pm, vpm, options.fill.detect_ring_holes);
   std::vector<typename decltype(groups)::value_type> retried;
   std::vector<std::size_t> hole_of;
-  for (const auto& group : groups)
+  for (const auto& group : groups) {
+    const auto part = component.find(face(opposite(group.outer, pm), pm));
+    if (part == component.end() || !in_contact.count(part->second)) continue;
     for (auto h : halfedges_around_face(group.outer, pm)) {
       const auto found = failed_at.find(get(vpm, target(h, pm)));
       if (found == failed_at.end()) continue;
@@ -603,6 +620,9 @@ void step_fill_meeting_other_parts(PolygonMesh& pm, VertexPointMap vpm, const Ge
       failed_at.erase(found);
       break;
     }
+  }
+  timer.count("parts_in_contact", double(in_contact.size()));
+  if (retried.empty()) return;
   Fill_options fill = options.fill;
   fill.other_parts_are_obstacles = false;
   std::vector<Fill_patch<PolygonMesh>> patches;
@@ -647,13 +667,14 @@ void step_fill_holes(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& trai
     timer.count("faces_added", double(count_faces(pm)) - double(faces_before));
     timer.count("vertices_added", double(count_vertices(pm)) - double(vertices_before));
   }
-  // A border point of each hole finds it again after the growth removed and put back faces
-  // (its halfedges are then new).
+  // A border point of each hole finds it again after patches were added and rolled back.
   std::vector<typename boost::property_traits<VertexPointMap>::value_type> border_points;
   for (const auto& group : groups) border_points.push_back(get(vpm, target(group.outer, pm)));
-  if (!result.cancelled) step_grow_failed_holes(pm, vpm, traits, options, groups, visitor, result);
+  // Against other parts first: growing a hole removes faces of its part, which is right for a
+  // folded scan border but shortens a tube whose end lies on another part.
   if (!result.cancelled && options.fill.check_self_intersections)
     step_fill_meeting_other_parts(pm, vpm, traits, options, border_points, visitor, result);
+  if (!result.cancelled) step_grow_failed_holes(pm, vpm, traits, options, groups, visitor, result);
 }
 
 /// The connected component (by edges) of every face.

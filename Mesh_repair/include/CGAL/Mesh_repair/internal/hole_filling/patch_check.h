@@ -139,7 +139,8 @@ class Face_box_cache {
 
  public:
   /// With `other_parts_are_obstacles` false, a query returns only faces of the connected
-  /// components of the faces it excludes (the hole's ring): a patch may then meet other parts.
+  /// components of the faces it excludes (the hole's ring) and faces of kept patches: a patch may
+  /// then meet the faces other parts had, never another patch.
   Face_box_cache(const PolygonMesh& pm, VertexPointMap vpm, bool other_parts_are_obstacles = true)
       : pm_(pm), vpm_(vpm), other_parts_are_obstacles_(other_parts_are_obstacles) {}
 
@@ -168,7 +169,7 @@ class Face_box_cache {
 
   /// The faces (not in `exclude`) whose box overlaps `box`, in the order they entered the
   /// cache (the order a scan of every box gives); without `other_parts_are_obstacles`, only
-  /// those of the components of the faces of `exclude`.
+  /// those of the components of the faces of `exclude` and those of kept patches.
   template <class FaceSet>
   std::vector<face_descriptor> overlapping(const CGAL::Bbox_3& box, const FaceSet& exclude) const {
     CGAL_precondition(built_);
@@ -192,7 +193,8 @@ class Face_box_cache {
     std::vector<face_descriptor> found;
     std::unordered_set<face_descriptor> seen;  // a moved face is in the cache twice
     for (std::size_t i : candidates) {
-      if (!parts.empty() && !parts.count(component_of(faces_[i]))) continue;
+      if (!parts.empty() && !parts.count(component_of(faces_[i])) && !patch_faces_.count(faces_[i]))
+        continue;
       if (CGAL::do_overlap(boxes_[i], box) && exclude.count(faces_[i]) == 0 &&
           seen.insert(faces_[i]).second)
         found.push_back(faces_[i]);
@@ -211,6 +213,7 @@ class Face_box_cache {
     for (face_descriptor f : patch.faces) {
       add(f);
       component_[f] = component;
+      patch_faces_.insert(f);
     }
     for (vertex_descriptor v : moved) {
       if (halfedge(v, pm_) == GT::null_halfedge()) continue;
@@ -303,6 +306,7 @@ class Face_box_cache {
   std::size_t cells_per_axis_ = 1;
   std::vector<std::vector<std::size_t>> cells_;  ///< indices into faces_/boxes_
   std::unordered_map<face_descriptor, std::size_t> component_;
+  std::unordered_set<face_descriptor> patch_faces_;  ///< of kept patches: always obstacles
 };
 
 /// Pairs of intersecting faces with at least one patch face, among the patch, its ring and
