@@ -59,6 +59,9 @@ struct Repair_result {
   std::size_t self_intersections_input = 0;       ///< pairs, when detection was asked
   std::size_t self_intersections_output = 0;      ///< pairs, when detection was asked
   std::size_t self_intersections_in_patches = 0;  ///< pairs involving a patch or its ring
+  /// Set when a count stopped at its pair limit (internal/bounded_pairs.h: max(100000,
+  /// 10 x faces)); the count is then a lower bound.
+  bool self_intersections_input_truncated = false, self_intersections_output_truncated = false;
   /// Of the output's pairs, those between two connected components (an assembly of solids):
   /// kept on purpose (listed in `kept`), counted by the self-intersection removal step.
   std::size_t self_intersections_between_components = 0;
@@ -119,6 +122,8 @@ inline void write_json(Json_writer& json, const Repair_result& r) {
       .field("self_intersections_input", r.self_intersections_input)
       .field("self_intersections_output", r.self_intersections_output)
       .field("self_intersections_in_patches", r.self_intersections_in_patches)
+      .field("self_intersections_input_truncated", r.self_intersections_input_truncated)
+      .field("self_intersections_output_truncated", r.self_intersections_output_truncated)
       .field("self_intersections_between_components", r.self_intersections_between_components)
       .field("solids_merged", r.solids_merged)
       .array("unavailable_steps", r.unavailable_steps)

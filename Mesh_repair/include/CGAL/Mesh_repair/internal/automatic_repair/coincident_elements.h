@@ -258,11 +258,9 @@ void verify_again(const PolygonMesh& pm, const Repair_options& options,
   result.border_cycles_left = border_cycles(pm).size();
   result.closed = result.border_cycles_left == 0;
   if (faces_changed && options.detect_self_intersections) {
-    result.self_intersections_output = count_self_intersections(pm);
-    result.self_intersections_in_patches =
-        result.self_intersections_output > result.self_intersections_input
-            ? result.self_intersections_output - result.self_intersections_input
-            : 0;
+    bool truncated = false;
+    const std::size_t output = count_self_intersections(pm, truncated);
+    set_output_self_intersections(result, output, truncated);
   }
   result.output_vertices = count_vertices(pm);
   result.output_faces = count_faces(pm);

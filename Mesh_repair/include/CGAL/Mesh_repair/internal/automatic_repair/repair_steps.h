@@ -18,6 +18,7 @@
 #include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/repair_degeneracies.h>
+#include <CGAL/Mesh_repair/internal/bounded_pairs.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/stitch_borders.h>
 #include <CGAL/Polygon_mesh_processing/shape_predicates.h>
@@ -113,23 +114,25 @@ class Step_timer {
   std::chrono::steady_clock::time_point start_;
 };
 
+/// Intersecting face pairs of `pm`, counted up to the pair limit (internal/bounded_pairs.h);
+/// `truncated` says the count is a lower bound.
 template <class PolygonMesh>
-std::size_t count_self_intersections(const PolygonMesh& pm) {
-  using face_descriptor = typename boost::graph_traits<PolygonMesh>::face_descriptor;
-  std::vector<std::pair<face_descriptor, face_descriptor>> pairs;
-  // CGAL's Parallel_tag pass splits the boxes into 4 x 4 sub-problems over copied ranges and
-  // costs 2.7x the processor time of the sequential one (bench_check, 1.1M faces): it only wins
-  // in wall time with clearly more than 2.7 threads.
-#ifdef CGAL_LINKED_WITH_TBB
-  if (tbb::this_task_arena::max_concurrency() > 4) {
-    CGAL::Polygon_mesh_processing::self_intersections<CGAL::Parallel_tag>(
-        pm, std::back_inserter(pairs));
-    return pairs.size();
-  }
-#endif
-  CGAL::Polygon_mesh_processing::self_intersections<CGAL::Sequential_tag>(
-      pm, std::back_inserter(pairs));
-  return pairs.size();
+std::size_t count_self_intersections(const PolygonMesh& pm, bool& truncated) {
+  const auto found = bounded_self_intersections(pm);
+  truncated = found.truncated;
+  return found.pairs.size();
+}
+
+/// Sets the output count and the pairs the repair added. Past the pair limit on either side,
+/// the difference is unknown and counts nothing.
+inline void set_output_self_intersections(Repair_result& result, std::size_t output,
+                                          bool truncated) {
+  result.self_intersections_output = output;
+  result.self_intersections_output_truncated = truncated;
+  result.self_intersections_in_patches = !truncated && !result.self_intersections_input_truncated &&
+                                                 output > result.self_intersections_input
+                                             ? output - result.self_intersections_input
+                                             : 0;
 }
 
 template <class PolygonMesh>
@@ -210,8 +213,7 @@ std::pair<Stitch_result, Stitch_result> stitch_a_copy(const PolygonMesh& pm, Ver
   pairs = 0;
   intersecting.clear();
   if (changes == 0) return stitched;
-  std::vector<std::pair<face_descriptor, face_descriptor>> found;
-  CGAL::Polygon_mesh_processing::self_intersections(trial, std::back_inserter(found));
+  const auto found = bounded_self_intersections(trial).pairs;
   pairs = found.size();
   std::set<vertex_descriptor> seen;
   auto add = [&](vertex_descriptor w) {
@@ -816,12 +818,14 @@ void step_remove_self_intersections(PolygonMesh& pm, VertexPointMap vpm, const G
   using face_descriptor = typename boost::graph_traits<PolygonMesh>::face_descriptor;
   using vertex_descriptor = typename boost::graph_traits<PolygonMesh>::vertex_descriptor;
   Step_timer timer(result, "self-intersection removal", visitor);
+  bool truncated = false;
   auto within_component_pairs = [&](std::size_t& between) {
-    std::vector<std::pair<face_descriptor, face_descriptor>> pairs, within;
-    CGAL::Polygon_mesh_processing::self_intersections(pm, std::back_inserter(pairs));
+    std::vector<std::pair<face_descriptor, face_descriptor>> within;
+    const auto found = bounded_self_intersections(pm);
+    truncated = found.truncated;
     const auto component = face_components(pm);
     between = 0;
-    for (const auto& pair : pairs) {
+    for (const auto& pair : found.pairs) {
       if (component.at(pair.first) == component.at(pair.second))
         within.push_back(pair);
       else
@@ -833,6 +837,15 @@ void step_remove_self_intersections(PolygonMesh& pm, VertexPointMap vpm, const G
   auto pairs = within_component_pairs(between);
   timer.count("pairs_within_components_before", double(pairs.size()));
   timer.count("pairs_between_components_kept", double(between));
+  if (truncated) {
+    // Past the pair limit the mesh intersects itself nearly everywhere: no local replacement
+    // or autorefinement applies, and both would cost as much as the pairs.
+    timer.count("pairs_truncated", 1.0);
+    timer.step().notes.push_back("at least " + std::to_string(pairs.size() + between) +
+                                 " self-intersecting pairs (the pair limit): not removed");
+    result.self_intersections_between_components = between;
+    return;
+  }
   // Closed parts first: their autorefinement keeps the surface as it is outside the volume,
   // where region replacement would cut a part that crosses itself and cap the ends.
   if (!pairs.empty() && autorefine_self_intersecting_parts(pm, vpm, traits, pairs, timer) > 0)
@@ -884,8 +897,7 @@ void step_merge_intersecting_solids(PolygonMesh& pm, VertexPointMap vpm, const G
                                     Any_visitor visitor, Repair_result& result) {
   using face_descriptor = typename boost::graph_traits<PolygonMesh>::face_descriptor;
   Step_timer timer(result, "intersecting solids merged", visitor);
-  std::vector<std::pair<face_descriptor, face_descriptor>> pairs;
-  CGAL::Polygon_mesh_processing::self_intersections(pm, std::back_inserter(pairs));
+  auto pairs = bounded_self_intersections(pm).pairs;
   const auto component = face_components(pm);
   std::size_t components = 0;
   for (const auto& c : component) components = std::max(components, c.second + 1);
@@ -937,8 +949,7 @@ void step_merge_intersecting_solids(PolygonMesh& pm, VertexPointMap vpm, const G
   }
   result.solids_merged = merged;
   if (unions > 0) {
-    pairs.clear();
-    CGAL::Polygon_mesh_processing::self_intersections(pm, std::back_inserter(pairs));
+    pairs = bounded_self_intersections(pm).pairs;
     const auto after = face_components(pm);
     std::size_t between = 0;
     for (const auto& pair : pairs) between += after.at(pair.first) != after.at(pair.second);
@@ -982,11 +993,10 @@ void step_verify(const PolygonMesh& pm, const Repair_options& options, Repair_re
     result.holes.failed = 0;
   }
   if (options.detect_self_intersections) {
-    result.self_intersections_output = count_self_intersections(pm);
+    bool truncated = false;
+    const std::size_t output = count_self_intersections(pm, truncated);
+    set_output_self_intersections(result, output, truncated);
     result.self_intersections_checked = true;
-    if (result.self_intersections_output > result.self_intersections_input)
-      result.self_intersections_in_patches =
-          result.self_intersections_output - result.self_intersections_input;
   }
   result.output_vertices = count_vertices(pm);
   result.output_faces = count_faces(pm);
@@ -1020,7 +1030,8 @@ inline void list_remaining(Repair_result& result) {
       std::min(result.self_intersections_between_components, result.self_intersections_output);
   add(result.self_intersections_checked && result.self_intersections_output > between &&
           result.self_intersections_in_patches == 0,
-      std::to_string(result.self_intersections_output - between) +
+      std::string(result.self_intersections_output_truncated ? "at least " : "") +
+          std::to_string(result.self_intersections_output - between) +
           " self-intersecting face pair(s) (already in the input)");
   add(result.self_intersections_checked && between > 0 && result.self_intersections_in_patches == 0,
       std::to_string(between) +
@@ -1048,8 +1059,10 @@ Repair_result run_repair_pipeline(PolygonMesh& pm, VertexPointMap vpm, const Geo
   result.input_faces = count_faces(pm);
   if (options.detect_self_intersections) {
     Step_timer timer(result, "input self-intersections", visitor);
-    result.self_intersections_input = count_self_intersections(pm);
+    result.self_intersections_input =
+        count_self_intersections(pm, result.self_intersections_input_truncated);
     timer.count("pairs", double(result.self_intersections_input));
+    if (result.self_intersections_input_truncated) timer.count("pairs_truncated", 1.0);
   }
   step_exact_stitching(pm, result, visitor);
   step_tolerance_stitching(pm, vpm, traits, options, visitor, result);
