@@ -106,6 +106,41 @@ Bounded_pairs<Pair> bounded_pairs(std::size_t limit, Enumerate&& enumerate) {
   return found;
 }
 
+/// Candidate pairs a filtering enumeration may examine (box pairs whose boxes overlap, of which
+/// only a few are kept): `spend()` once per candidate; past `limit` it throws `Exhausted`, which
+/// `run` catches, and `exhausted()` tells the caller the enumeration is incomplete. For a box
+/// pass over `elements` boxes: `candidate_limit(elements)`, ten times the pair limit.
+class Pair_budget {
+ public:
+  struct Exhausted {};
+
+  explicit Pair_budget(std::size_t limit) : limit_(limit) {}
+  void spend() {
+    if (++spent_ > limit_) {
+      exhausted_ = true;
+      throw Exhausted();
+    }
+  }
+  bool exhausted() const { return exhausted_; }
+  std::size_t limit() const { return limit_; }
+
+  template <class Enumerate>
+  void run(Enumerate&& enumerate) {
+    try {
+      enumerate();
+    } catch (const Exhausted&) {
+    }
+  }
+
+ private:
+  std::size_t limit_, spent_ = 0;
+  bool exhausted_ = false;
+};
+
+inline std::size_t candidate_limit(std::size_t elements) {
+  return 10 * default_pair_limit(elements);
+}
+
 /// CGAL's `self_intersections` on `faces`, stopped after `limit` pairs (0: the default limit
 /// of the face count). Sequential: CGAL's Parallel_tag pass collects every candidate pair in a
 /// concurrent vector before writing any (no early stop, memory quadratic on these inputs), and

@@ -306,6 +306,17 @@ inline std::string tolerance_derivation(const Stitch_result& r, bool from_trial)
   return out.str();
 }
 
+/// Says in the step's notes where the stitcher stopped at a limit (internal/bounded_pairs.h).
+inline void add_stitch_limit_notes(const Stitch_result& stitched, Step_timer& timer) {
+  if (stitched.node_pairs_truncated)
+    timer.step().notes.push_back(
+        "at least " + std::to_string(stitched.node_pairs_within_tolerance) +
+        " border node pairs within tolerance (the pair limit): no node merged");
+  if (stitched.t_junction_search_truncated)
+    timer.step().notes.push_back(
+        "the T-junction search met more candidate pairs than its limit: stopped, no split");
+}
+
 template <class PolygonMesh, class VertexPointMap, class GeomTraits>
 void step_tolerance_stitching(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
                               const Repair_options& options, Any_visitor visitor,
@@ -335,6 +346,7 @@ void step_tolerance_stitching(PolygonMesh& pm, VertexPointMap vpm, const GeomTra
       timer.step().notes.push_back(std::to_string(plan.frozen.size()) +
                                    " vertices left unstitched: stitching them made faces "
                                    "intersect (stitching trial)");
+    add_stitch_limit_notes(stitched, timer);
     timer.details(stitched);
     if (stitched.cancelled) result.cancelled = true;
   }
@@ -344,6 +356,7 @@ void step_tolerance_stitching(PolygonMesh& pm, VertexPointMap vpm, const GeomTra
       pm, vpm, traits, stitch_settings(options, tolerance, false), visitor, plan.frozen);
   timer.count("t_junctions_split", double(repaired.t_junctions_split));
   timer.count("edges_stitched", double(repaired.edges_stitched));
+  add_stitch_limit_notes(repaired, timer);
   timer.details(repaired);
   if (repaired.cancelled) result.cancelled = true;
 }
