@@ -13,6 +13,7 @@
 
 #include "support/cgal_calls.h"
 
+#include <cmath>
 #include <filesystem>
 #include <sstream>
 #include <string>
@@ -461,6 +462,72 @@ TEST(DetectDefects, PolyhedronGivesTheSameReportAsSurfaceMesh) {
 // Real meshes of libcgal-demo.
 std::string demo_mesh(const std::string& name) {
   return std::string(MESH_REPAIR_DEMO_DATA_DIR) + "/" + name;
+}
+
+/// The {n/step} star polygon on the unit circle, triangulated as a fan from its first corner
+/// (what read_mesh makes of such a polygon): every fan triangle overlaps many others.
+Mesh fan_of_star_polygon(std::size_t n, std::size_t step) {
+  const double pi = 3.14159265358979323846;
+  std::vector<Point> points;
+  for (std::size_t k = 0; k < n; ++k) {
+    const double angle = 2 * pi * double((k * step) % n) / double(n);
+    points.emplace_back(std::cos(angle), std::sin(angle), 0);
+  }
+  std::vector<std::vector<std::size_t>> fan;
+  for (std::size_t k = 1; k + 1 < n; ++k) fan.push_back({0, k, k + 1});
+  return mesh_from(points, fan);
+}
+
+/// detect_defects on plain options, with the pair limit the public function leaves at default.
+MR::Defect_report detect_with_pair_limit(const Mesh& mesh, std::size_t pair_limit,
+                                         bool self_intersections = true) {
+  MR::internal::detect::Options options;
+  options.pair_limit = pair_limit;
+  options.self_intersections = self_intersections;
+  const auto vim = CGAL::get_initialized_vertex_index_map(mesh);
+  const auto fim = CGAL::get_initialized_face_index_map(mesh);
+  const auto him = CGAL::get_initialized_halfedge_index_map(mesh);
+  using Access =
+      MR::internal::detect::Mesh_access<Mesh, Mesh::Property_map<Mesh::Vertex_index, Point>, Kernel,
+                                        std::decay_t<decltype(vim)>, std::decay_t<decltype(fim)>,
+                                        std::decay_t<decltype(him)>>;
+  MR::Default_visitor quiet;
+  return MR::internal::detect::run_detection(Access{mesh, mesh.points(), Kernel(), vim, fim, him},
+                                             options, MR::Any_visitor(quiet));
+}
+
+TEST(DetectDefects, SelfOverlappingStarStopsAtThePairLimitAndSaysTheCountIsALowerBound) {
+  const Mesh star = fan_of_star_polygon(101, 40);
+  const MR::Defect_report full = MR::detect_defects(star);
+  ASSERT_TRUE(full.self_intersections_checked);
+  EXPECT_FALSE(full.self_intersections_truncated);
+  EXPECT_FALSE(full.overlaps_truncated);
+  ASSERT_GT(full.self_intersections.size(), 200u);  // quadratic in the 99 fan triangles
+
+  const std::size_t limit = 50;
+  const MR::Defect_report bounded = detect_with_pair_limit(star, limit);
+  EXPECT_TRUE(bounded.self_intersections_truncated);
+  EXPECT_EQ(bounded.self_intersections.size(), limit);
+  EXPECT_TRUE(bounded.overlaps_truncated);
+  EXPECT_LE(bounded.overlaps.size(), limit);
+  EXPECT_TRUE(bounded.small_gaps_truncated);
+  EXPECT_EQ(bounded.small_gaps.size(), limit);
+  EXPECT_TRUE(bounded.t_junctions_truncated);
+  EXPECT_EQ(bounded.t_junctions.size(), limit);
+  EXPECT_FALSE(bounded.cancelled);
+  // Every pair kept is a true intersection, and the text and JSON say "at least".
+  for (const auto& pair : bounded.self_intersections) EXPECT_NE(pair.first, pair.second);
+  EXPECT_NE(MR::summary(bounded).find("at least 50 face pair(s)"), std::string::npos);
+  std::ostringstream text;
+  MR::Json_writer json(text);
+  MR::write_json(json, bounded);
+  EXPECT_NE(text.str().find("\"self_intersections_truncated\": true"), std::string::npos);
+
+  // Without self-intersections, the coplanar-overlap pass stops at the limit too.
+  const MR::Defect_report coplanar = detect_with_pair_limit(star, limit, false);
+  EXPECT_FALSE(coplanar.self_intersections_checked);
+  EXPECT_TRUE(coplanar.overlaps_truncated);
+  EXPECT_EQ(coplanar.overlaps.size(), limit);
 }
 
 class RealMesh : public ::testing::TestWithParam<std::string> {};

@@ -16,6 +16,7 @@
 #include <chrono>
 #include <fstream>
 #include <iostream>
+#include <string>
 #include <sstream>
 
 namespace mesh_repair_cli {
@@ -145,7 +146,8 @@ void print_summary(const std::string& input, const CGAL::Mesh_repair::Soup_repai
   std::cout << ", " << (r.valid ? "valid" : "INVALID") << ", " << (r.closed ? "closed" : "open")
             << ", " << (r.manifold ? "manifold" : "non-manifold");
   if (r.self_intersections_checked)
-    std::cout << ", " << r.self_intersections_output << " self-intersecting pairs";
+    std::cout << ", " << (r.self_intersections_output_truncated ? "at least " : "")
+              << r.self_intersections_output << " self-intersecting pairs";
   std::cout << '\n';
   switch (r.status()) {
     case CGAL::Mesh_repair::Repair_status::complete:
@@ -279,16 +281,25 @@ int repair_one(const Arguments& args) {
     write_summary(args.get("--summary"), status, result, MR::counts(before), seconds);
   print_summary(input, soup, result, written_check);
   const auto c0 = MR::counts(before), c1 = MR::counts(after);
+  // A count that stopped at its pair limit is a lower bound ("at least", the report's flags).
+  auto bound = [](bool truncated, std::size_t count) {
+    return (truncated ? std::string("at least ") : std::string()) + std::to_string(count);
+  };
   std::cout << "defects before -> after: border cycles " << c0.border_cycles << " -> "
             << c1.border_cycles << ", non-manifold edges " << c0.non_manifold_edges << " -> "
             << c1.non_manifold_edges << ", non-manifold vertices " << c0.non_manifold_vertices
             << " -> " << c1.non_manifold_vertices << ", duplicated faces " << c0.duplicated_faces
             << " -> " << c1.duplicated_faces << ", degenerate faces " << c0.degenerate_faces
             << " -> " << c1.degenerate_faces << ", needles " << c0.needles << " -> " << c1.needles
-            << ", caps " << c0.caps << " -> " << c1.caps << ", small gaps " << c0.small_gaps
-            << " -> " << c1.small_gaps << ", T-junctions " << c0.t_junctions << " -> "
-            << c1.t_junctions << ", self-intersections " << result.self_intersections_input
-            << " -> " << result.self_intersections_output << '\n';
+            << ", caps " << c0.caps << " -> " << c1.caps << ", small gaps "
+            << bound(before.small_gaps_truncated, c0.small_gaps) << " -> "
+            << bound(after.small_gaps_truncated, c1.small_gaps) << ", T-junctions "
+            << bound(before.t_junctions_truncated, c0.t_junctions) << " -> "
+            << bound(after.t_junctions_truncated, c1.t_junctions) << ", self-intersections "
+            << bound(result.self_intersections_input_truncated, result.self_intersections_input)
+            << " -> "
+            << bound(result.self_intersections_output_truncated, result.self_intersections_output)
+            << '\n';
   std::cout << "wrote " << output << " in " << seconds << " s\n";
   return status;
 }

@@ -133,6 +133,11 @@ struct Defect_report {
   std::vector<Face_pair> overlaps;  ///< coplanar faces whose interiors overlap
   bool self_intersections_checked = false;
   std::vector<Face_pair> self_intersections;
+  /// Set when an enumeration stopped at its pair limit (`Options::pair_limit` of detection,
+  /// default max(100000, 10 x faces), or 10 x border vertices for gaps and T-junctions): the
+  /// list holds the first pairs found and its count is a lower bound.
+  bool small_gaps_truncated = false, t_junctions_truncated = false, overlaps_truncated = false,
+       self_intersections_truncated = false;
   std::vector<Connected_component> components;
   bool closed = false;  ///< no border edge (and not empty)
   Quality_statistics quality;

@@ -9,6 +9,7 @@
 /// repaired; `write_json` and `summary` print it. See doc/detect_defects.md.
 
 #include <CGAL/Mesh_repair/internal/background_task.h>
+#include <CGAL/Mesh_repair/internal/bounded_pairs.h>
 #include <CGAL/Mesh_repair/internal/detect_defects/border_cycles.h>
 #include <CGAL/Mesh_repair/internal/detect_defects/coincident_elements.h>
 #include <CGAL/Mesh_repair/internal/detect_defects/components.h>
@@ -41,6 +42,10 @@ struct Options {
   Shape_thresholds shapes;
   bool self_intersections = true;
   int histogram_bins = 10;
+  /// Pairs kept by each enumeration whose output can be quadratic (intersecting and overlapping
+  /// faces, gaps, T-junctions); 0: max(100000, 10 x faces), or x border vertices for gaps and
+  /// T-junctions (internal/bounded_pairs.h). Past it the report marks the count a lower bound.
+  std::size_t pair_limit = 0;
 };
 
 template <class Access, class Visitor>
@@ -92,8 +97,8 @@ class Defect_detector {
   bool start_self_intersections() {
     if (!report_.triangle_mesh || !options_.self_intersections) return true;
     box_pass_.run([this] {
-      CGAL::Polygon_mesh_processing::self_intersections<CGAL::Sequential_tag>(
-          faces(mesh_.pm), mesh_.pm, std::back_inserter(intersecting_pairs_),
+      intersecting_pairs_ = bounded_self_intersections(
+          faces(mesh_.pm), mesh_.pm, options_.pair_limit,
           CGAL::parameters::vertex_point_map(mesh_.vpm).geom_traits(mesh_.gt));
     });
     return true;
@@ -101,7 +106,9 @@ class Defect_detector {
 
   bool start_overlap_pass() {
     if (!report_.triangle_mesh || options_.self_intersections) return true;
-    box_pass_.run([this] { coplanar_overlaps_ = overlapping_coplanar_faces(mesh_, zero_area_); });
+    box_pass_.run([this] {
+      coplanar_overlaps_ = overlapping_coplanar_faces(mesh_, zero_area_, options_.pair_limit);
+    });
     return true;
   }
 
@@ -143,16 +150,24 @@ class Defect_detector {
     }
     std::set<Coordinates> non_manifold_points;
     for (const auto& v : report_.non_manifold_vertices) non_manifold_points.insert(v.point);
-    report_.small_gaps = proximity.small_gaps(report_.tolerance, non_manifold_points);
-    report_.t_junctions = proximity.t_junctions(report_.tolerance);
+    auto gaps = proximity.small_gaps(report_.tolerance, non_manifold_points, options_.pair_limit);
+    report_.small_gaps = std::move(gaps.pairs);
+    report_.small_gaps_truncated = gaps.truncated;
+    auto junctions = proximity.t_junctions(report_.tolerance, options_.pair_limit);
+    report_.t_junctions = std::move(junctions.pairs);
+    report_.t_junctions_truncated = junctions.truncated;
   }
 
   void overlaps() {
     if (!report_.triangle_mesh) return;
     box_pass_.wait();
+    // Overlapping faces intersect: among a truncated list of intersecting pairs, the overlaps
+    // found are a lower bound too.
     const auto found = report_.self_intersections_checked
-                           ? overlapping_among(mesh_, intersecting_pairs_, zero_area_)
-                           : coplanar_overlaps_;
+                           ? overlapping_among(mesh_, intersecting_pairs_.pairs, zero_area_)
+                           : coplanar_overlaps_.pairs;
+    report_.overlaps_truncated = report_.self_intersections_checked ? intersecting_pairs_.truncated
+                                                                    : coplanar_overlaps_.truncated;
     for (const auto& pair : found)
       if (!duplicated_.count({pair.first, pair.second})) report_.overlaps.push_back(pair);
   }
@@ -160,8 +175,9 @@ class Defect_detector {
   void self_intersections() {
     if (!options_.self_intersections || !report_.triangle_mesh) return;
     box_pass_.wait();
-    for (const auto& p : intersecting_pairs_)
+    for (const auto& p : intersecting_pairs_.pairs)
       report_.self_intersections.push_back(mesh_.face_pair(p.first, p.second));
+    report_.self_intersections_truncated = intersecting_pairs_.truncated;
     std::sort(report_.self_intersections.begin(), report_.self_intersections.end(),
               [](const Face_pair& p, const Face_pair& q) {
                 return std::make_pair(p.first, p.second) < std::make_pair(q.first, q.second);
@@ -184,10 +200,10 @@ class Defect_detector {
   Defect_report report_;
   std::vector<Cycle_halfedges<typename Access::halfedge_descriptor>> cycles_;
   std::vector<char> zero_area_;
-  std::vector<std::pair<typename Access::face_descriptor, typename Access::face_descriptor>>
+  Bounded_pairs<std::pair<typename Access::face_descriptor, typename Access::face_descriptor>>
       intersecting_pairs_;
   std::set<std::pair<std::size_t, std::size_t>> duplicated_;
-  std::vector<Face_pair> coplanar_overlaps_;
+  Bounded_pairs<Face_pair> coplanar_overlaps_;
   Background_task box_pass_;
 };
 

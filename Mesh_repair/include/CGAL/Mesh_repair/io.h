@@ -28,6 +28,7 @@
 #include <CGAL/Mesh_repair/json_writer.h>
 #include <CGAL/Mesh_repair/polygon_soup.h>
 #include <CGAL/Mesh_repair/soup_repair_report.h>
+#include <CGAL/Mesh_repair/internal/polygon_projection.h>
 #include <CGAL/Mesh_repair/internal/soup_validation.h>
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
@@ -284,6 +285,19 @@ inline void add_soup_changes(Soup_repair_report& report, const Soup_repair_repor
 
 namespace internal {
 
+/// False when `polygon` has more than `max_unchecked_polygon_sides` sides and its projection
+/// is not simple (internal/polygon_projection.h): CGAL's triangulation would insert every
+/// crossing of two sides as a vertex (O(n^2) time and memory: about a million for a {1500/601}
+/// star) and then fail, so such a polygon goes to the fan directly.
+template <class Point, class Polygon>
+bool worth_triangulating_with_cgal(const std::vector<Point>& points, const Polygon& polygon) {
+  if (polygon.size() <= max_unchecked_polygon_sides) return true;
+  std::vector<Point> corners;
+  corners.reserve(polygon.size());
+  for (std::size_t i : polygon) corners.push_back(points[i]);
+  return projection_is_simple(corners);
+}
+
 /// Appends to `triangles` the triangles of one polygon of `points` (indices into `points`):
 /// CGAL's triangulation of the polygon on its own (a constrained Delaunay triangulation in its
 /// plane) when it succeeds, else a fan from its first point. CGAL fails on polygons whose
@@ -297,6 +311,7 @@ void triangulate_polygon(const std::vector<Point>& points, const Polygon& polygo
     for (std::size_t k = 1; k + 1 < polygon.size(); ++k)
       triangles.push_back({polygon[0], polygon[k], polygon[k + 1]});
   };
+  if (!worth_triangulating_with_cgal(points, polygon)) return fan();
   PolygonMesh one;
   auto vpm = get(CGAL::vertex_point, one);
   std::unordered_map<vertex_descriptor, std::size_t> index;
@@ -365,7 +380,15 @@ std::string soup_to_mesh(const Polygon_soup<Point>& soup, PolygonMesh& pm, bool 
   PMP::polygon_soup_to_polygon_mesh(soup.points, soup.polygons, pm);
   if (triangulate) {
     std::size_t non_triangles = 0;
-    for (const auto& polygon : soup.polygons) non_triangles += polygon.size() > 3 ? 1 : 0;
+    bool large_crossing_polygon = false;
+    for (const auto& polygon : soup.polygons) {
+      non_triangles += polygon.size() > 3 ? 1 : 0;
+      large_crossing_polygon =
+          large_crossing_polygon || !internal::worth_triangulating_with_cgal(soup.points, polygon);
+    }
+    // CGAL would fail on it after quadratic work; the fallback fans it (internal::
+    // triangulate_polygon) and triangulates the other polygons as CGAL does.
+    if (large_crossing_polygon) return triangulate_soup_to_mesh(soup, pm, report);
     if (non_triangles > 0) {
       const std::size_t before = num_faces(pm);
       if (!PMP::triangulate_faces(pm)) return triangulate_soup_to_mesh(soup, pm, report);

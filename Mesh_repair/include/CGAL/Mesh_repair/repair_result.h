@@ -63,6 +63,9 @@ struct Repair_result {
   /// Pairs inside the parts beyond the input's (pairs between parts that a patch closing one
   /// part against another adds are counted with the pairs between components).
   std::size_t self_intersections_in_patches = 0;
+  /// Set when a count stopped at its pair limit (internal/bounded_pairs.h: max(100000,
+  /// 10 x faces)); the count is then a lower bound.
+  bool self_intersections_input_truncated = false, self_intersections_output_truncated = false;
   /// Of the output's pairs, those between two connected components (an assembly of solids):
   /// kept on purpose (listed in `kept`), counted by the self-intersection removal step.
   std::size_t self_intersections_between_components = 0;
@@ -125,6 +128,8 @@ inline void write_json(Json_writer& json, const Repair_result& r) {
              r.self_intersections_input_between_components)
       .field("self_intersections_output", r.self_intersections_output)
       .field("self_intersections_in_patches", r.self_intersections_in_patches)
+      .field("self_intersections_input_truncated", r.self_intersections_input_truncated)
+      .field("self_intersections_output_truncated", r.self_intersections_output_truncated)
       .field("self_intersections_between_components", r.self_intersections_between_components)
       .field("solids_merged", r.solids_merged)
       .array("unavailable_steps", r.unavailable_steps)

@@ -37,6 +37,14 @@ struct Stitch_result {
   /// Largest move of an input vertex divided by its shortest incident edge (at most
   /// `default_tolerance_fraction`, 0.5, with a derived tolerance).
   double max_move_to_shortest_edge = 0;
+  /// Set when the node pairs within tolerance exceed the pair limit (max(100000, 10 x border
+  /// nodes), internal/bounded_pairs.h): then no node is merged and no T-junction is split, and
+  /// `node_pairs_within_tolerance` (a lower bound) says how many were found before stopping.
+  bool node_pairs_truncated = false;
+  std::size_t node_pairs_within_tolerance = 0;
+  /// Set when the T-junction search met more candidate box pairs than its budget (10 x the pair
+  /// limit of the border nodes and edges): the pass stopped and split nothing.
+  bool t_junction_search_truncated = false;
   bool cancelled = false;  ///< the visitor asked to stop
   bool valid = true;       ///< `is_valid_polygon_mesh` after the call
 };
@@ -58,6 +66,9 @@ inline void write_json(Json_writer& json, const Stitch_result& r) {
       .field("t_junction_splits_undone", r.t_junction_splits_undone)
       .field("tangent_plane_merges", r.tangent_plane_merges)
       .field("midpoint_merges", r.midpoint_merges)
+      .field("node_pairs_truncated", r.node_pairs_truncated)
+      .field("node_pairs_within_tolerance", r.node_pairs_within_tolerance)
+      .field("t_junction_search_truncated", r.t_junction_search_truncated)
       .field("edges_stitched", r.edges_stitched)
       .field("unstitched_clusters", r.unstitched_clusters)
       .field("unglued_nodes_restored", r.unglued_nodes_restored)

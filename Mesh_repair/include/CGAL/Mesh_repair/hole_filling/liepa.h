@@ -11,6 +11,7 @@
 
 #include <CGAL/Mesh_repair/hole_filling/fill_options.h>
 #include <CGAL/Mesh_repair/hole_filling/fill_result.h>
+#include <CGAL/Mesh_repair/internal/hole_filling/cubic_search_limit.h>
 #include <CGAL/Mesh_repair/parameters.h>
 
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
@@ -24,10 +25,6 @@ namespace CGAL {
 namespace Mesh_repair {
 
 namespace internal {
-
-/// Borders with more edges are triangulated in CGAL's Delaunay search space only (see
-/// `fill_hole_liepa`): its exhaustive fallback is O(n^3) in time and O(n^2) in memory.
-constexpr std::size_t max_cubic_search_edges = 1000;
 
 /// `fill_hole_liepa` on plain options; `vpm` and `traits` as read by the public function.
 template <class PolygonMesh, class VertexPointMap, class GeomTraits>
@@ -45,21 +42,36 @@ Hole_fill_report fill_hole_liepa(
   // CGAL falls back to the O(n^3) search over every triangulation when its Delaunay search
   // space holds none; past `max_cubic_search_edges` that search takes minutes and O(n^2)
   // memory, so the fill fails instead and the next method takes the hole.
-  const bool bounded = halfedges_around_face(border_halfedge, pm).size() > max_cubic_search_edges;
+  // The Delaunay pass runs the same search on the ranges it cannot close; `Cubic_search_limit`
+  // stops those past the limit too (the mesh is not modified before the triangulation exists).
+  std::vector<typename GeomTraits::Point_3> corners;
+  for (auto h : halfedges_around_face(border_halfedge, pm))
+    corners.push_back(get(vpm, target(h, pm)));
+  report.failure = cgal_triangulation_refusal(corners);
+  if (!report.failure.empty()) return report;
+  const bool bounded = corners.size() > max_cubic_search_edges;
+  Cubic_search_limit limit;
   const auto np = CGAL::parameters::vertex_point_map(vpm)
                       .geom_traits(traits)
                       .fairing_continuity(options.fairing_continuity)
-                      .do_not_use_cubic_algorithm(bounded);
+                      .do_not_use_cubic_algorithm(bounded)
+                      .visitor(limit);
   bool faired = true;
-  if (options.last_stage == Liepa_stage::triangulate) {
-    PMP::triangulate_hole(pm, border_halfedge, std::back_inserter(patch.faces), np);
-  } else if (options.last_stage == Liepa_stage::refine) {
-    PMP::triangulate_and_refine_hole(pm, border_halfedge, std::back_inserter(patch.faces),
-                                     std::back_inserter(patch.vertices), np);
-  } else {
-    faired = std::get<0>(
-        PMP::triangulate_refine_and_fair_hole(pm, border_halfedge, std::back_inserter(patch.faces),
-                                              std::back_inserter(patch.vertices), np));
+  try {
+    if (options.last_stage == Liepa_stage::triangulate) {
+      PMP::triangulate_hole(pm, border_halfedge, std::back_inserter(patch.faces), np);
+    } else if (options.last_stage == Liepa_stage::refine) {
+      PMP::triangulate_and_refine_hole(pm, border_halfedge, std::back_inserter(patch.faces),
+                                       std::back_inserter(patch.vertices), np);
+    } else {
+      faired = std::get<0>(PMP::triangulate_refine_and_fair_hole(
+          pm, border_halfedge, std::back_inserter(patch.faces), std::back_inserter(patch.vertices),
+          np));
+    }
+  } catch (const Cubic_search_too_large&) {
+    report.failure = "CGAL's triangulation needs an exhaustive search over more than " +
+                     std::to_string(max_cubic_search_edges) + " border vertices (O(n^3)); not run";
+    return report;
   }
   report.faces_created = patch.faces.size();
   report.vertices_created = patch.vertices.size();

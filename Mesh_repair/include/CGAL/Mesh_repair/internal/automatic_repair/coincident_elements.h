@@ -258,9 +258,7 @@ void verify_again(const PolygonMesh& pm, const Repair_options& options,
   result.border_cycles_left = border_cycles(pm).size();
   result.closed = result.border_cycles_left == 0;
   if (faces_changed && options.detect_self_intersections) {
-    std::tie(result.self_intersections_output, result.self_intersections_between_components) =
-        self_intersection_census(pm);
-    result.self_intersections_in_patches = pairs_added_within_parts(result);
+    set_output_self_intersections(pm, result);
   }
   result.output_vertices = count_vertices(pm);
   result.output_faces = count_faces(pm);

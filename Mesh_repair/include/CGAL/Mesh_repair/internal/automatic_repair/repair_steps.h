@@ -18,6 +18,7 @@
 #include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/repair_degeneracies.h>
+#include <CGAL/Mesh_repair/internal/bounded_pairs.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/stitch_borders.h>
 #include <CGAL/Polygon_mesh_processing/shape_predicates.h>
@@ -114,31 +115,21 @@ class Step_timer {
   std::chrono::steady_clock::time_point start_;
 };
 
-template <class PolygonMesh>
-std::size_t count_self_intersections(const PolygonMesh& pm) {
-  using face_descriptor = typename boost::graph_traits<PolygonMesh>::face_descriptor;
-  std::vector<std::pair<face_descriptor, face_descriptor>> pairs;
-  // CGAL's Parallel_tag pass splits the boxes into 4 x 4 sub-problems over copied ranges and
-  // costs 2.7x the processor time of the sequential one (bench_check, 1.1M faces): it only wins
-  // in wall time with clearly more than 2.7 threads.
-#ifdef CGAL_LINKED_WITH_TBB
-  if (tbb::this_task_arena::max_concurrency() > 4) {
-    CGAL::Polygon_mesh_processing::self_intersections<CGAL::Parallel_tag>(
-        pm, std::back_inserter(pairs));
-    return pairs.size();
-  }
-#endif
-  CGAL::Polygon_mesh_processing::self_intersections<CGAL::Sequential_tag>(
-      pm, std::back_inserter(pairs));
-  return pairs.size();
-}
+/// The pairs of intersecting faces of `pm` up to the pair limit (internal/bounded_pairs.h): all
+/// and those between two connected components; `truncated`: the counts are lower bounds.
+struct Self_intersection_census {
+  std::size_t all = 0, between = 0;
+  bool truncated = false;
+};
 
-/// The pairs of intersecting faces of `pm`, all and those between two connected components.
 template <class PolygonMesh>
-std::pair<std::size_t, std::size_t> self_intersection_census(const PolygonMesh& pm);
+Self_intersection_census self_intersection_census(const PolygonMesh& pm);
 
-/// Pairs inside the parts that the repair added, from the counts of `result`.
+/// Pairs inside the parts that the repair added, from the counts of `result` (0 when a count
+/// stopped at the pair limit: the difference is unknown).
 inline std::size_t pairs_added_within_parts(const Repair_result& result) {
+  if (result.self_intersections_input_truncated || result.self_intersections_output_truncated)
+    return 0;
   const auto within = [](std::size_t all, std::size_t between) {
     return all - std::min(all, between);
   };
@@ -147,6 +138,16 @@ inline std::size_t pairs_added_within_parts(const Repair_result& result) {
   const std::size_t after =
       within(result.self_intersections_output, result.self_intersections_between_components);
   return after > before ? after - before : 0;
+}
+
+/// Counts the output's pairs into `result`, and the pairs the repair added inside the parts.
+template <class PolygonMesh>
+void set_output_self_intersections(const PolygonMesh& pm, Repair_result& result) {
+  const Self_intersection_census census = self_intersection_census(pm);
+  result.self_intersections_output = census.all;
+  result.self_intersections_between_components = census.between;
+  result.self_intersections_output_truncated = census.truncated;
+  result.self_intersections_in_patches = pairs_added_within_parts(result);
 }
 
 template <class PolygonMesh>
@@ -227,8 +228,7 @@ std::pair<Stitch_result, Stitch_result> stitch_a_copy(const PolygonMesh& pm, Ver
   pairs = 0;
   intersecting.clear();
   if (changes == 0) return stitched;
-  std::vector<std::pair<face_descriptor, face_descriptor>> found;
-  CGAL::Polygon_mesh_processing::self_intersections(trial, std::back_inserter(found));
+  const auto found = bounded_self_intersections(trial).pairs;
   pairs = found.size();
   std::set<vertex_descriptor> seen;
   auto add = [&](vertex_descriptor w) {
@@ -321,6 +321,17 @@ inline std::string tolerance_derivation(const Stitch_result& r, bool from_trial)
   return out.str();
 }
 
+/// Says in the step's notes where the stitcher stopped at a limit (internal/bounded_pairs.h).
+inline void add_stitch_limit_notes(const Stitch_result& stitched, Step_timer& timer) {
+  if (stitched.node_pairs_truncated)
+    timer.step().notes.push_back(
+        "at least " + std::to_string(stitched.node_pairs_within_tolerance) +
+        " border node pairs within tolerance (the pair limit): no node merged");
+  if (stitched.t_junction_search_truncated)
+    timer.step().notes.push_back(
+        "the T-junction search met more candidate pairs than its limit: stopped, no split");
+}
+
 template <class PolygonMesh, class VertexPointMap, class GeomTraits>
 void step_tolerance_stitching(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
                               const Repair_options& options, Any_visitor visitor,
@@ -350,6 +361,7 @@ void step_tolerance_stitching(PolygonMesh& pm, VertexPointMap vpm, const GeomTra
       timer.step().notes.push_back(std::to_string(plan.frozen.size()) +
                                    " vertices left unstitched: stitching them made faces "
                                    "intersect (stitching trial)");
+    add_stitch_limit_notes(stitched, timer);
     timer.details(stitched);
     if (stitched.cancelled) result.cancelled = true;
   }
@@ -359,6 +371,7 @@ void step_tolerance_stitching(PolygonMesh& pm, VertexPointMap vpm, const GeomTra
       pm, vpm, traits, stitch_settings(options, tolerance, false), visitor, plan.frozen);
   timer.count("t_junctions_split", double(repaired.t_junctions_split));
   timer.count("edges_stitched", double(repaired.edges_stitched));
+  add_stitch_limit_notes(repaired, timer);
   timer.details(repaired);
   if (repaired.cancelled) result.cancelled = true;
 }
@@ -598,9 +611,7 @@ void step_fill_meeting_other_parts(PolygonMesh& pm, VertexPointMap vpm, const Ge
   Step_timer timer(result, "failed holes filled against other parts", visitor);
   // Only parts that already meet another part (an assembly): a patch must not create the first
   // contact between two parts that were apart.
-  using face_descriptor = typename boost::graph_traits<PolygonMesh>::face_descriptor;
-  std::vector<std::pair<face_descriptor, face_descriptor>> pairs;
-  CGAL::Polygon_mesh_processing::self_intersections(pm, std::back_inserter(pairs));
+  const auto pairs = bounded_self_intersections(pm).pairs;
   const auto component = face_components(pm);
   std::unordered_set<std::size_t> in_contact;
   for (const auto& pair : pairs)
@@ -703,14 +714,15 @@ face_components(const PolygonMesh& pm) {
 }
 
 template <class PolygonMesh>
-std::pair<std::size_t, std::size_t> self_intersection_census(const PolygonMesh& pm) {
-  using face_descriptor = typename boost::graph_traits<PolygonMesh>::face_descriptor;
-  std::vector<std::pair<face_descriptor, face_descriptor>> pairs;
-  CGAL::Polygon_mesh_processing::self_intersections(pm, std::back_inserter(pairs));
+Self_intersection_census self_intersection_census(const PolygonMesh& pm) {
+  const auto found = bounded_self_intersections(pm);
   const auto component = face_components(pm);
-  std::size_t between = 0;
-  for (const auto& pair : pairs) between += component.at(pair.first) != component.at(pair.second);
-  return {pairs.size(), between};
+  Self_intersection_census census;
+  census.all = found.pairs.size();
+  census.truncated = found.truncated;
+  for (const auto& pair : found.pairs)
+    census.between += component.at(pair.first) != component.at(pair.second);
+  return census;
 }
 
 /// The faces of `group` as a triangle soup of the core's points (`union_of_solids`).
@@ -924,12 +936,14 @@ void step_remove_self_intersections(PolygonMesh& pm, VertexPointMap vpm, const G
   using face_descriptor = typename boost::graph_traits<PolygonMesh>::face_descriptor;
   using vertex_descriptor = typename boost::graph_traits<PolygonMesh>::vertex_descriptor;
   Step_timer timer(result, "self-intersection removal", visitor);
+  bool truncated = false;
   auto within_component_pairs = [&](std::size_t& between) {
-    std::vector<std::pair<face_descriptor, face_descriptor>> pairs, within;
-    CGAL::Polygon_mesh_processing::self_intersections(pm, std::back_inserter(pairs));
+    std::vector<std::pair<face_descriptor, face_descriptor>> within;
+    const auto found = bounded_self_intersections(pm);
+    truncated = found.truncated;
     const auto component = face_components(pm);
     between = 0;
-    for (const auto& pair : pairs) {
+    for (const auto& pair : found.pairs) {
       if (component.at(pair.first) == component.at(pair.second))
         within.push_back(pair);
       else
@@ -941,6 +955,15 @@ void step_remove_self_intersections(PolygonMesh& pm, VertexPointMap vpm, const G
   auto pairs = within_component_pairs(between);
   timer.count("pairs_within_components_before", double(pairs.size()));
   timer.count("pairs_between_components_kept", double(between));
+  if (truncated) {
+    // Past the pair limit the mesh intersects itself nearly everywhere: no local replacement
+    // or autorefinement applies, and both would cost as much as the pairs.
+    timer.count("pairs_truncated", 1.0);
+    timer.step().notes.push_back("at least " + std::to_string(pairs.size() + between) +
+                                 " self-intersecting pairs (the pair limit): not removed");
+    result.self_intersections_between_components = between;
+    return;
+  }
   // Closed parts first: their autorefinement keeps the surface as it is outside the volume,
   // where region replacement would cut a part that crosses itself and cap the ends.
   if (!pairs.empty() && autorefine_self_intersecting_parts(pm, vpm, traits, pairs, timer) > 0)
@@ -992,8 +1015,7 @@ void step_merge_intersecting_solids(PolygonMesh& pm, VertexPointMap vpm, const G
                                     Any_visitor visitor, Repair_result& result) {
   using face_descriptor = typename boost::graph_traits<PolygonMesh>::face_descriptor;
   Step_timer timer(result, "intersecting solids merged", visitor);
-  std::vector<std::pair<face_descriptor, face_descriptor>> pairs;
-  CGAL::Polygon_mesh_processing::self_intersections(pm, std::back_inserter(pairs));
+  auto pairs = bounded_self_intersections(pm).pairs;
   const auto component = face_components(pm);
   std::size_t components = 0;
   for (const auto& c : component) components = std::max(components, c.second + 1);
@@ -1045,8 +1067,7 @@ void step_merge_intersecting_solids(PolygonMesh& pm, VertexPointMap vpm, const G
   }
   result.solids_merged = merged;
   if (unions > 0) {
-    pairs.clear();
-    CGAL::Polygon_mesh_processing::self_intersections(pm, std::back_inserter(pairs));
+    pairs = bounded_self_intersections(pm).pairs;
     const auto after = face_components(pm);
     std::size_t between = 0;
     for (const auto& pair : pairs) between += after.at(pair.first) != after.at(pair.second);
@@ -1090,10 +1111,8 @@ void step_verify(const PolygonMesh& pm, const Repair_options& options, Repair_re
     result.holes.failed = 0;
   }
   if (options.detect_self_intersections) {
-    std::tie(result.self_intersections_output, result.self_intersections_between_components) =
-        self_intersection_census(pm);
+    set_output_self_intersections(pm, result);
     result.self_intersections_checked = true;
-    result.self_intersections_in_patches = pairs_added_within_parts(result);
     if (result.self_intersections_between_components >
         result.self_intersections_input_between_components)
       timer.count("pairs_between_components_added",
@@ -1132,7 +1151,8 @@ inline void list_remaining(Repair_result& result) {
       std::min(result.self_intersections_between_components, result.self_intersections_output);
   add(result.self_intersections_checked && result.self_intersections_output > between &&
           result.self_intersections_in_patches == 0,
-      std::to_string(result.self_intersections_output - between) +
+      std::string(result.self_intersections_output_truncated ? "at least " : "") +
+          std::to_string(result.self_intersections_output - between) +
           " self-intersecting face pair(s) (already in the input)");
   add(result.self_intersections_checked && between > 0 && result.self_intersections_in_patches == 0,
       std::to_string(between) +
@@ -1160,11 +1180,14 @@ Repair_result run_repair_pipeline(PolygonMesh& pm, VertexPointMap vpm, const Geo
   result.input_faces = count_faces(pm);
   if (options.detect_self_intersections) {
     Step_timer timer(result, "input self-intersections", visitor);
-    std::tie(result.self_intersections_input, result.self_intersections_input_between_components) =
-        self_intersection_census(pm);
+    const auto census = self_intersection_census(pm);
+    result.self_intersections_input = census.all;
+    result.self_intersections_input_between_components = census.between;
+    result.self_intersections_input_truncated = census.truncated;
     timer.count("pairs", double(result.self_intersections_input));
     timer.count("pairs_between_components",
                 double(result.self_intersections_input_between_components));
+    if (census.truncated) timer.count("pairs_truncated", 1.0);
   }
   step_exact_stitching(pm, result, visitor);
   step_tolerance_stitching(pm, vpm, traits, options, visitor, result);

@@ -10,6 +10,7 @@
 // test with Orientation_2: convex interiors are disjoint iff an edge line of one triangle leaves
 // the other on its outer closed side.
 
+#include <CGAL/Mesh_repair/internal/bounded_pairs.h>
 #include <CGAL/Mesh_repair/internal/detect_defects/mesh_access.h>
 
 #include <CGAL/box_intersection_d.h>
@@ -98,9 +99,12 @@ std::vector<Face_pair> overlapping_among(const Access& mesh, const FacePairs& in
   return overlaps;
 }
 
+/// Overlapping coplanar faces by a box pass of their own, at most `limit` pairs (0: the
+/// default limit of the face count, internal/bounded_pairs.h).
 template <class Access>
-std::vector<Face_pair> overlapping_coplanar_faces(const Access& mesh,
-                                                  const std::vector<char>& zero_area) {
+Bounded_pairs<Face_pair> overlapping_coplanar_faces(const Access& mesh,
+                                                    const std::vector<char>& zero_area,
+                                                    std::size_t limit = 0) {
   using face_descriptor = typename Access::face_descriptor;
   using Box =
       CGAL::Box_intersection_d::Box_with_info_d<double, 3, face_descriptor,
@@ -113,11 +117,12 @@ std::vector<Face_pair> overlapping_coplanar_faces(const Access& mesh,
     for (auto v : vertices_around_face(halfedge(f, mesh.pm), mesh.pm)) box += mesh.point(v).bbox();
     boxes.emplace_back(box, f);
   }
-  std::vector<Face_pair> overlaps;
+  Bounded_pairs<Face_pair> overlaps;
+  Bounded_collector<Face_pair> collector(overlaps, pair_limit(limit, num_faces(mesh.pm)));
   auto callback = [&](const Box* first, const Box* second) {
     if (coplanar_interiors_overlap(triangle_points(mesh, first->info()),
                                    triangle_points(mesh, second->info()), mesh.gt))
-      overlaps.push_back(mesh.face_pair(first->info(), second->info()));
+      collector.add(mesh.face_pair(first->info(), second->info()));
   };
   // Pointers and CGAL self_intersections' cutoff (brute force below 2000 boxes): the segment
   // tree then moves 8-byte pointers and stops recursing early, as on mesh-like box sets pays.
@@ -127,11 +132,14 @@ std::vector<Face_pair> overlapping_coplanar_faces(const Access& mesh,
   pointers.reserve(boxes.size());
   for (const Box& b : boxes) pointers.push_back(&b);
   const std::ptrdiff_t cutoff = 2000;
-  CGAL::box_self_intersection_d<CGAL::Sequential_tag>(pointers.begin(), pointers.end(), callback,
-                                                      cutoff);
-  std::sort(overlaps.begin(), overlaps.end(), [](const Face_pair& p, const Face_pair& q) {
-    return std::make_pair(p.first, p.second) < std::make_pair(q.first, q.second);
+  collector.run([&](auto&) {
+    CGAL::box_self_intersection_d<CGAL::Sequential_tag>(pointers.begin(), pointers.end(), callback,
+                                                        cutoff);
   });
+  std::sort(overlaps.pairs.begin(), overlaps.pairs.end(),
+            [](const Face_pair& p, const Face_pair& q) {
+              return std::make_pair(p.first, p.second) < std::make_pair(q.first, q.second);
+            });
   return overlaps;
 }
 

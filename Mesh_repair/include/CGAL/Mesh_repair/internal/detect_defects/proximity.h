@@ -5,8 +5,12 @@
 
 // Small gaps and T-junctions (thesis Table 4.1 row 2, sections 4.2-4.3): border vertices close
 // to another border vertex, or to the interior of another border edge. One kd-tree of the
-// border vertices answers both, through fuzzy-sphere range queries: no quadratic pass.
+// border vertices answers both, through fuzzy-sphere range queries: no quadratic pass. The
+// output itself can be quadratic (a self-overlapping star polygon whose long edges give a large
+// derived tolerance: 1.77 M gaps on 5000 vertices), so both lists stop at a pair limit
+// (internal/bounded_pairs.h).
 
+#include <CGAL/Mesh_repair/internal/bounded_pairs.h>
 #include <CGAL/Mesh_repair/internal/detect_defects/border_cycles.h>
 
 #include <CGAL/Kd_tree.h>
@@ -80,10 +84,28 @@ class Border_proximity {
   /// Border vertex pairs closer than `tolerance`, from different cycles or, on one cycle,
   /// farther apart along it than twice the tolerance. Pairs joined by a mesh edge are not gaps,
   /// nor coincident pairs at `non_manifold_points` (they are reported as non-manifold vertices:
-  /// closing that "gap" would pinch the surface).
-  std::vector<Small_gap> small_gaps(double tolerance,
-                                    const std::set<Coordinates>& non_manifold_points) const {
-    std::vector<Small_gap> gaps;
+  /// closing that "gap" would pinch the surface). At most `limit` pairs (0: the default
+  /// limit of the border vertex count).
+  Bounded_pairs<Small_gap> small_gaps(double tolerance,
+                                      const std::set<Coordinates>& non_manifold_points,
+                                      std::size_t limit = 0) const {
+    return bounded_pairs<Small_gap>(pair_limit(limit, border_.size()), [&](auto& collector) {
+      find_small_gaps(tolerance, non_manifold_points, collector);
+    });
+  }
+
+  /// Border vertices within `tolerance` of the interior of a border edge they are not an end
+  /// of, and farther than `tolerance` from both of its ends (closer, they are a gap pair). At
+  /// most `limit` of them (0: the default limit of the border vertex count).
+  Bounded_pairs<T_junction> t_junctions(double tolerance, std::size_t limit = 0) const {
+    return bounded_pairs<T_junction>(pair_limit(limit, border_.size()), [&](auto& collector) {
+      find_t_junctions(tolerance, collector);
+    });
+  }
+
+ private:
+  void find_small_gaps(double tolerance, const std::set<Coordinates>& non_manifold_points,
+                       Bounded_collector<Small_gap>& gaps) const {
     std::vector<std::size_t> found;
     for (std::size_t i = 0; i < border_.size(); ++i) {
       found.clear();
@@ -100,16 +122,12 @@ class Border_proximity {
         gap.second_point = mesh_.coordinates(border_[j].vertex);
         gap.distance = distance(points_[i], points_[j]);
         gap.same_cycle = border_[i].cycle == border_[j].cycle;
-        gaps.push_back(gap);
+        gaps.add(gap);
       }
     }
-    return gaps;
   }
 
-  /// Border vertices within `tolerance` of the interior of a border edge they are not an end
-  /// of, and farther than `tolerance` from both of its ends (closer, they are a gap pair).
-  std::vector<T_junction> t_junctions(double tolerance) const {
-    std::vector<T_junction> junctions;
+  void find_t_junctions(double tolerance, Bounded_collector<T_junction>& junctions) const {
     std::vector<std::size_t> found;
     for (const auto& cycle : cycles_) {
       for (halfedge_descriptor h : cycle) {
@@ -123,10 +141,8 @@ class Border_proximity {
         for (std::size_t j : found) add_t_junction(h, a, b, border_[j], tolerance, junctions);
       }
     }
-    return junctions;
   }
 
- private:
   static double distance(const Point& p, const Point& q) {
     return std::sqrt(CGAL::to_double(CGAL::squared_distance(p, q)));
   }
@@ -147,7 +163,7 @@ class Border_proximity {
 
   void add_t_junction(halfedge_descriptor h, const Point& a, const Point& b,
                       const Border_vertex<Access>& w, double tolerance,
-                      std::vector<T_junction>& junctions) const {
+                      Bounded_collector<T_junction>& junctions) const {
     const auto s = source(h, mesh_.pm), t = target(h, mesh_.pm);
     if (w.vertex == s || w.vertex == t) return;
     if (distance(w.point, a) <= tolerance || distance(w.point, b) <= tolerance) return;
@@ -167,7 +183,7 @@ class Border_proximity {
     junction.foot = {CGAL::to_double(foot.x()), CGAL::to_double(foot.y()),
                      CGAL::to_double(foot.z())};
     junction.distance = gap;
-    junctions.push_back(junction);
+    junctions.add(junction);
   }
 
   const Access& mesh_;

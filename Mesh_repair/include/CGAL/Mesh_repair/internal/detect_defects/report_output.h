@@ -219,6 +219,10 @@ inline void write_json(Json_writer& json, const Defect_report& r) {
       .field("tolerance", r.tolerance)
       .field("tolerance_derived", r.tolerance_derived)
       .field("cancelled", r.cancelled)
+      .field("small_gaps_truncated", r.small_gaps_truncated)
+      .field("t_junctions_truncated", r.t_junctions_truncated)
+      .field("overlaps_truncated", r.overlaps_truncated)
+      .field("self_intersections_truncated", r.self_intersections_truncated)
       .field("defects_found", c.any());
   internal::write_border_cycles(json, r.border_cycles);
   internal::write_non_manifold(json, r);
@@ -242,6 +246,8 @@ inline void write_json(Json_writer& json, const Defect_report& r) {
 inline std::string summary(const Defect_report& r, std::size_t examples = 3) {
   const Defect_counts c = counts(r);
   std::ostringstream out;
+  // A count that stopped at its pair limit is a lower bound.
+  auto at_least = [](bool truncated) { return truncated ? "at least " : ""; };
   auto point = [](const Coordinates& p) {
     std::ostringstream s;
     s << '(' << p[0] << ", " << p[1] << ", " << p[2] << ')';
@@ -279,18 +285,18 @@ inline std::string summary(const Defect_report& r, std::size_t examples = 3) {
   shapes(Degeneracy::cap);
   out << "slivers:                " << c.slivers << '\n';
   out << "small gaps (tolerance " << r.tolerance << (r.tolerance_derived ? ", derived" : "")
-      << "): " << c.small_gaps << '\n';
+      << "): " << at_least(r.small_gaps_truncated) << c.small_gaps << '\n';
   for (std::size_t i = 0; i < r.small_gaps.size() && i < examples; ++i)
     out << "  " << point(r.small_gaps[i].first_point) << " ~ "
         << point(r.small_gaps[i].second_point) << ", distance " << r.small_gaps[i].distance << '\n';
-  out << "T-junctions:            " << c.t_junctions << '\n';
+  out << "T-junctions:            " << at_least(r.t_junctions_truncated) << c.t_junctions << '\n';
   for (std::size_t i = 0; i < r.t_junctions.size() && i < examples; ++i)
     out << "  vertex at " << point(r.t_junctions[i].vertex_point) << ", distance "
         << r.t_junctions[i].distance << '\n';
-  out << "overlapping faces:      " << c.overlaps << '\n';
+  out << "overlapping faces:      " << at_least(r.overlaps_truncated) << c.overlaps << '\n';
   out << "self-intersections:     ";
   if (r.self_intersections_checked)
-    out << c.self_intersections << " face pair(s)\n";
+    out << at_least(r.self_intersections_truncated) << c.self_intersections << " face pair(s)\n";
   else
     out << "not checked\n";
   for (std::size_t i = 0; i < r.components.size() && i < examples; ++i)
@@ -308,6 +314,10 @@ inline std::string summary(const Defect_report& r, std::size_t examples = 3) {
   out << "quality: min angle " << figure(r.quality.min_angle_deg) << " deg, mean shape factor "
       << figure(r.quality.mean_shape_factor) << ", mean Q " << figure(r.quality.mean_aspect_ratio)
       << '\n';
+  if (r.small_gaps_truncated || r.t_junctions_truncated || r.overlaps_truncated ||
+      r.self_intersections_truncated)
+    out << "some enumerations stopped at their pair limit (proportional to the mesh size): "
+           "the counts marked \"at least\" are lower bounds\n";
   if (r.cancelled) out << "detection was cancelled: the report is partial\n";
   return out.str();
 }

@@ -3,6 +3,7 @@
 #ifndef CGAL_MESH_REPAIR_INTERNAL_HOLE_FILLING_GUIDE_SURFACE_IMPL_H
 #define CGAL_MESH_REPAIR_INTERNAL_HOLE_FILLING_GUIDE_SURFACE_IMPL_H
 
+#include <CGAL/Mesh_repair/internal/hole_filling/cubic_search_limit.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/guide_surface.h>
 
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
@@ -17,8 +18,15 @@ namespace internal {
 CGAL_MESH_REPAIR_CORE_INLINE Guide_surface::Guide_surface(const std::vector<Vec3>& border) {
   std::vector<Epick::Point_3> polyline;
   for (const Vec3& p : border) polyline.emplace_back(p[0], p[1], p[2]);
+  if (!cgal_triangulation_refusal(polyline).empty()) return;  // no guide: valid() is false
   std::vector<CGAL::Triple<int, int, int>> triples;
-  CGAL::Polygon_mesh_processing::triangulate_hole_polyline(polyline, std::back_inserter(triples));
+  Cubic_search_limit limit;  // past it, no guide (valid() is false)
+  try {
+    CGAL::Polygon_mesh_processing::triangulate_hole_polyline(polyline, std::back_inserter(triples),
+                                                             CGAL::parameters::visitor(limit));
+  } catch (const Cubic_search_too_large&) {
+    return;
+  }
   for (const auto& t : triples) {
     triangles_.emplace_back(polyline[std::size_t(t.first)], polyline[std::size_t(t.second)],
                             polyline[std::size_t(t.third)]);

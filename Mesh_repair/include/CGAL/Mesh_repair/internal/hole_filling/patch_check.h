@@ -8,6 +8,7 @@
 // self-intersecting patch in the mesh.
 
 #include <CGAL/Mesh_repair/hole_filling/fill_result.h>
+#include <CGAL/Mesh_repair/internal/bounded_pairs.h>
 
 #include <CGAL/Bbox_3.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
@@ -109,20 +110,24 @@ std::vector<typename boost::graph_traits<PolygonMesh>::face_descriptor> patch_wi
 /// Number of pairs of intersecting triangles of `range` (a degenerate face counts as a pair with
 /// itself) that involve at least one face of `patch`, decided with the exact predicates of
 /// `traits` by CGAL's `self_intersections`. Pairs of two other faces existed before the fill.
+/// The enumeration stops at the pair limit of the range (internal/bounded_pairs.h): around a
+/// patch whose surroundings intersect themselves that much (a self-overlapping fan), the patch
+/// cannot be checked within the bound and counts as intersecting (at least one pair).
 template <class PolygonMesh, class VertexPointMap, class GeomTraits>
 std::size_t pairs_involving_patch(
     const std::vector<typename boost::graph_traits<PolygonMesh>::face_descriptor>& range,
     const PolygonMesh& pm, const Fill_patch<PolygonMesh>& patch, VertexPointMap vpm,
     const GeomTraits& traits) {
   using face_descriptor = typename boost::graph_traits<PolygonMesh>::face_descriptor;
-  std::vector<std::pair<face_descriptor, face_descriptor>> pairs;
-  CGAL::Polygon_mesh_processing::self_intersections(
-      range, pm, std::back_inserter(pairs),
-      CGAL::parameters::vertex_point_map(vpm).geom_traits(traits));
+  const auto found =
+      bounded_self_intersections(range, pm, default_pair_limit(range.size()),
+                                 CGAL::parameters::vertex_point_map(vpm).geom_traits(traits));
   const std::unordered_set<face_descriptor> in_patch(patch.faces.begin(), patch.faces.end());
-  return std::size_t(std::count_if(pairs.begin(), pairs.end(), [&](const auto& pair) {
-    return in_patch.count(pair.first) > 0 || in_patch.count(pair.second) > 0;
-  }));
+  const auto pairs =
+      std::size_t(std::count_if(found.pairs.begin(), found.pairs.end(), [&](const auto& pair) {
+        return in_patch.count(pair.first) > 0 || in_patch.count(pair.second) > 0;
+      }));
+  return found.truncated ? std::max<std::size_t>(pairs, 1) : pairs;
 }
 
 /// Bounding boxes of the faces a new patch must not meet: every face of the mesh when the

@@ -17,6 +17,7 @@
 // borders can find anything (see run()); clusters are linked lists over node ids, matching pairs
 // are bucketed by cluster, T-junctions found by box intersection.
 
+#include <CGAL/Mesh_repair/internal/bounded_pairs.h>
 #include <CGAL/Mesh_repair/internal/cubic_curves.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/border_cycles.h>
 #include <CGAL/Mesh_repair/internal/stitching/glue_border_pairs.h>
@@ -107,8 +108,11 @@ class Gap_stitcher {
       if (!cancelled()) pair_nodes();
     }
     if (!cancelled()) place_clusters(false);
+    // Past the pair limit nothing is merged, and the T-junction search would meet as many
+    // pairs: the stitcher stops there (result_.node_pairs_truncated says so).
     for (int pass = 0;
-         settings_.repair_t_junctions && pass < settings_.max_t_junction_passes && !cancelled();
+         settings_.repair_t_junctions && pass < settings_.max_t_junction_passes && !cancelled() &&
+         !result_.node_pairs_truncated && !result_.t_junction_search_truncated;
          ++pass) {
       if (t_junction_pass() == 0) break;
       place_clusters(false);
@@ -342,28 +346,47 @@ class Gap_stitcher {
       std::size_t i, j;
       bool same_face;  // the two nodes share a face (computed here, in spatial order)
     };
-    std::vector<Candidate> candidates;
+    // Nodes within tolerance of each other can be O(n^2) pairs (a self-overlapping star polygon
+    // whose long edges give a large derived tolerance: 1.77 M pairs on 5000 nodes), and joining
+    // clusters checks every pair of their members. Past the pair limit (internal/
+    // bounded_pairs.h) the pairing is not done at all: the greedy order needs every candidate.
+    Bounded_pairs<Candidate> found;
+    Bounded_collector<Candidate> collector(found, default_pair_limit(node_original_.size()));
     Progress_reporter<Visitor> report(visitor_, node_original_.size());
     std::size_t done = 0;
-    // Queries in tree order, so consecutive queries visit the same tree nodes and mesh regions.
-    for (const Point_kd_tree::Item& item : tree.items()) {
-      if (!report(done++)) {
-        visitor_.end_step("pair border nodes");  // balanced on cancellation too
-        return;
+    bool stopped = false;
+    collector.run([&](auto&) {
+      // Queries in tree order, so consecutive queries visit the same tree nodes and mesh regions.
+      for (const Point_kd_tree::Item& item : tree.items()) {
+        if (!report(done++)) {
+          stopped = true;
+          return;
+        }
+        const std::size_t i = item.id;
+        const double radius = settings_.merge_nodes ? node_tolerance_[i] : 0.0;
+        tree.for_each_within(item.point, radius, [&](std::size_t j, double) {
+          if (j <= i) return;
+          const double d = norm(node_original_[i] - node_original_[j]);
+          if (d == 0) coincident_possible_ = true;  // two border nodes at one point
+          if (d > pair_tolerance(i, j)) return;
+          if (along_one_border_side(i, j, d))
+            ++result_.rejected_same_side;
+          else
+            collector.add({d, i, j, share_face(node_vertex_[i], node_vertex_[j])});
+        });
       }
-      const std::size_t i = item.id;
-      const double radius = settings_.merge_nodes ? node_tolerance_[i] : 0.0;
-      tree.for_each_within(item.point, radius, [&](std::size_t j, double) {
-        if (j <= i) return;
-        const double d = norm(node_original_[i] - node_original_[j]);
-        if (d == 0) coincident_possible_ = true;  // two border nodes at one point
-        if (d > pair_tolerance(i, j)) return;
-        if (along_one_border_side(i, j, d))
-          ++result_.rejected_same_side;
-        else
-          candidates.push_back({d, i, j, share_face(node_vertex_[i], node_vertex_[j])});
-      });
+    });
+    if (stopped) {
+      visitor_.end_step("pair border nodes");  // balanced on cancellation too
+      return;
     }
+    if (found.truncated) {
+      result_.node_pairs_truncated = true;
+      result_.node_pairs_within_tolerance = found.pairs.size();
+      visitor_.end_step("pair border nodes");
+      return;
+    }
+    std::vector<Candidate>& candidates = found.pairs;
     std::sort(candidates.begin(), candidates.end(), [](const Candidate& x, const Candidate& y) {
       return std::tie(x.distance, x.i, x.j) < std::tie(y.distance, y.i, y.j);
     });
@@ -487,7 +510,12 @@ class Gap_stitcher {
     }
     std::vector<Edge_hit> best(node_vertex_.size(),
                                Edge_hit{std::numeric_limits<double>::infinity(), 0, 0, {}});
+    // Long border edges across a self-overlapping border overlap the boxes of most nodes: the
+    // box pairs, not the hits, are quadratic there. Past the candidate budget the search stops
+    // and the pass splits nothing (t_junction_search_truncated).
+    Pair_budget budget(candidate_limit(node_boxes.size() + edge_boxes.size()));
     auto consider = [&](const Box& node_box, const Box& edge_box) {
+      budget.spend();
       const std::size_t id = node_box.info();
       const halfedge_descriptor h = border[edge_box.info()];
       const vertex_descriptor v = node_vertex_[id];
@@ -512,9 +540,15 @@ class Gap_stitcher {
         return;
       best[id] = Edge_hit{d, edge_box.info(), t, projection};
     };
-    CGAL::box_intersection_d(node_boxes.begin(), node_boxes.end(), edge_boxes.begin(),
-                             edge_boxes.end(), consider);
+    budget.run([&] {
+      CGAL::box_intersection_d(node_boxes.begin(), node_boxes.end(), edge_boxes.begin(),
+                               edge_boxes.end(), consider);
+    });
     std::vector<std::pair<std::size_t, Edge_hit>> hits;
+    if (budget.exhausted()) {
+      result_.t_junction_search_truncated = true;
+      return hits;
+    }
     for (std::size_t id = 0; id < best.size(); ++id)
       if (best[id].distance < std::numeric_limits<double>::infinity())
         hits.emplace_back(id, best[id]);
