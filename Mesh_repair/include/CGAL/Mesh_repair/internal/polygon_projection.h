@@ -10,6 +10,7 @@
 // cross everywhere (a self-overlapping {n/k} star), and then fail. This O(n log n) sweep (CGAL's
 // `is_simple_2` with exact predicates of the projection traits) tells such polygons apart first.
 
+#include <CGAL/Kernel/global_functions.h>
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Polygon_2_algorithms.h>
 #include <CGAL/Projection_traits_3.h>
@@ -22,8 +23,11 @@ namespace CGAL {
 namespace Mesh_repair {
 namespace internal {
 
-/// Polygons with at most this many sides are not checked: their crossings stay few.
-constexpr std::size_t max_unchecked_polygon_sides = 100;
+/// Polygons with at most this many sides are not checked: their crossings stay few (at most
+/// about n^2 / 4, 250,000, which CGAL's triangulation inserts in seconds). Real polygons whose
+/// projection is not simple but that CGAL triangulates well exist below it: a keyhole polygon
+/// (an annulus cut along a bridge edge, its sides touching) from a CAD export is one.
+constexpr std::size_t max_unchecked_polygon_sides = 1000;
 
 /// True when the projection of `corners` (a closed polygon, first point not repeated) along
 /// its Newell normal is a simple polygon; false too when the normal is zero or not finite.

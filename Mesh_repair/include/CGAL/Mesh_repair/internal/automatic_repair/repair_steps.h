@@ -681,11 +681,11 @@ void step_fill_holes(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& trai
   // A border point of each hole finds it again after patches were added and rolled back.
   std::vector<typename boost::property_traits<VertexPointMap>::value_type> border_points;
   for (const auto& group : groups) border_points.push_back(get(vpm, target(group.outer, pm)));
-  // Against other parts first: growing a hole removes faces of its part, which is right for a
-  // folded scan border but shortens a tube whose end lies on another part.
+  if (!result.cancelled) step_grow_failed_holes(pm, vpm, traits, options, groups, visitor, result);
+  // Against other parts last: a hole whose grown border leaves the other part is closed cleanly
+  // by the growth; what is left meets the other part wherever it is closed.
   if (!result.cancelled && options.fill.check_self_intersections)
     step_fill_meeting_other_parts(pm, vpm, traits, options, border_points, visitor, result);
-  if (!result.cancelled) step_grow_failed_holes(pm, vpm, traits, options, groups, visitor, result);
 }
 
 /// The connected component (by edges) of every face.
