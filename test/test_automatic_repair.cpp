@@ -20,6 +20,7 @@
 #include <filesystem>
 #include <limits>
 #include <random>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -447,13 +448,23 @@ TEST(AutomaticRepair, AnOpenEndLyingOnAnotherPartIsClosedAndTheContactKept) {
   EXPECT_EQ(repaired.self_intersections_in_patches, 0u);
   EXPECT_EQ(repaired.self_intersections_between_components, pairs.size());
 
-  // The pipeline closes the tube too (by growing the hole or against the box), and adds no pair
-  // inside a part.
+  // The pipeline closes the tube too, against the box, and adds no pair inside a part. The hole
+  // is not grown: its one ring of faces is the whole tube wall, 5x longer than the border edges,
+  // and growing would rebuild the wall as a faired membrane. Every wall vertex stays where it was.
+  std::vector<Point> wall;
+  for (auto vertex : v) wall.push_back(mesh.point(vertex));
   const auto result = MR::automatic_repair(mesh);
   EXPECT_TRUE(CGAL::is_closed(mesh));
   EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
   EXPECT_EQ(result.holes.failed, 0u);
   EXPECT_EQ(result.self_intersections_in_patches, 0u);
+  const auto* grown = find_step(result, "failed holes grown");
+  ASSERT_NE(grown, nullptr);
+  EXPECT_EQ(grown->count("not_grown_faces_too_long"), 1.0);
+  EXPECT_EQ(grown->count("faces_removed"), 0.0);
+  std::set<Point> output;
+  for (auto vertex : mesh.vertices()) output.insert(mesh.point(vertex));
+  for (const Point& p : wall) EXPECT_TRUE(output.count(p)) << p;
 }
 
 // Two interpenetrating spheres and a third apart, with `merge_intersecting_solids`: the two

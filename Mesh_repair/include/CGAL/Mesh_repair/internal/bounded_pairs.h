@@ -11,6 +11,7 @@
 // this header, so the limit and its meaning are the same everywhere.
 
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/box_intersection_d.h>
 
 #include <algorithm>
 #include <cstddef>
@@ -157,6 +158,56 @@ bounded_self_intersections(const FaceRange& face_range, const TriangleMesh& tm, 
         CGAL::Polygon_mesh_processing::self_intersections<CGAL::Sequential_tag>(
             face_range, tm, collector.inserter(), np);
       });
+}
+
+/// The pairs of CGAL's `self_intersections` over `first` and `second` together that hold a face
+/// of `first`: pairs within `first` and pairs of `first` x `second`, stopped after `limit`
+/// pairs. Pairs within `second` are not examined: around a patch whose surroundings overlap
+/// themselves everywhere (a self-overlapping fan) they are quadratic in number and already known.
+/// Two faces are tested by CGAL's own test (a shared vertex or edge is no intersection) and a
+/// degenerate face of `first` is a pair with itself, as in `self_intersections`.
+template <class TriangleMesh, class VertexPointMap, class GeomTraits>
+Bounded_pairs<std::pair<typename boost::graph_traits<TriangleMesh>::face_descriptor,
+                        typename boost::graph_traits<TriangleMesh>::face_descriptor>>
+bounded_intersections_involving(
+    const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& first,
+    const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& second,
+    const TriangleMesh& tm, std::size_t limit, VertexPointMap vpm, const GeomTraits& traits) {
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+  using Pair = std::pair<face_descriptor, face_descriptor>;
+  using Box =
+      CGAL::Box_intersection_d::Box_with_info_d<double, 3, face_descriptor,
+                                                CGAL::Box_intersection_d::ID_FROM_BOX_ADDRESS>;
+  return bounded_pairs<Pair>(limit, [&](Bounded_collector<Pair>& collector) {
+    auto boxes_of = [&](const std::vector<face_descriptor>& faces, bool degenerate_is_a_pair) {
+      std::vector<Box> boxes;
+      boxes.reserve(faces.size());
+      for (face_descriptor f : faces) {
+        const auto h = halfedge(f, tm);
+        const auto& p = get(vpm, target(h, tm));
+        const auto& q = get(vpm, target(next(h, tm), tm));
+        const auto& r = get(vpm, source(h, tm));
+        if (!traits.collinear_3_object()(p, q, r))
+          boxes.emplace_back(p.bbox() + q.bbox() + r.bbox(), f);
+        else if (degenerate_is_a_pair)
+          collector.add(Pair(f, f));
+      }
+      return boxes;
+    };
+    std::vector<Box> first_boxes = boxes_of(first, true), second_boxes = boxes_of(second, false);
+    std::vector<const Box*> first_ptr, second_ptr;
+    for (const Box& b : first_boxes) first_ptr.push_back(&b);
+    for (const Box& b : second_boxes) second_ptr.push_back(&b);
+    using Inserter = typename Bounded_collector<Pair>::Inserter;
+    CGAL::Polygon_mesh_processing::internal::Strict_intersect_faces<
+        Box, TriangleMesh, VertexPointMap, GeomTraits, Inserter>
+        test(tm, vpm, traits, collector.inserter());
+    const std::ptrdiff_t cutoff = 2000;  // CGAL's own in self_intersections
+    CGAL::box_self_intersection_d<CGAL::Sequential_tag>(first_ptr.begin(), first_ptr.end(), test,
+                                                        cutoff);
+    CGAL::box_intersection_d<CGAL::Sequential_tag>(
+        first_ptr.begin(), first_ptr.end(), second_ptr.begin(), second_ptr.end(), test, cutoff);
+  });
 }
 
 /// The same on every face of `tm` with its default point map.

@@ -65,6 +65,11 @@ constexpr int max_hole_growth_rings = 3;
 /// Holes with more border edges are not grown: growing is for the small holes of scanned
 /// borders, and Liepa's triangulation of a long border is cubic in its length.
 constexpr std::size_t max_grown_hole_edges = 300;
+/// A hole is grown only over faces whose longest edge is at most this many times the longest
+/// edge of its border. Scan borders are surrounded by faces of their own size; on CAD parts one
+/// ring of long faces can be a whole tube wall or a side of a box, and rebuilding it with
+/// Liepa's fairing replaces real geometry with a membrane.
+constexpr double max_grown_face_to_border_edge = 4.0;
 /// Self-intersecting faces are removed with 1, 2, ... up to 6 vertex rings
 /// (step_remove_self_intersections).
 constexpr int max_self_intersection_rings = 6;
@@ -511,6 +516,30 @@ std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor> group_
   return vertices;
 }
 
+/// Whether every face of `region` has its longest edge within `max_grown_face_to_border_edge`
+/// times the longest edge of the cycles of `group`.
+template <class PolygonMesh, class VertexPointMap, class Group>
+bool faces_fit_the_border(
+    const PolygonMesh& pm, VertexPointMap vpm,
+    const std::vector<typename boost::graph_traits<PolygonMesh>::face_descriptor>& region,
+    const Group& group) {
+  auto squared_length = [&](auto h) {
+    return CGAL::to_double(
+        CGAL::squared_distance(get(vpm, source(h, pm)), get(vpm, target(h, pm))));
+  };
+  double border = 0;
+  auto add = [&](auto cycle) {
+    for (auto h : halfedges_around_face(cycle, pm)) border = (std::max)(border, squared_length(h));
+  };
+  add(group.outer);
+  for (auto island : group.islands) add(island);
+  const double bound = max_grown_face_to_border_edge * max_grown_face_to_border_edge * border;
+  for (auto f : region)
+    for (auto h : halfedges_around_face(halfedge(f, pm), pm))
+      if (squared_length(h) > bound) return false;
+  return true;
+}
+
 /// Holes whose every patch was rejected (on scans: folded, overlapping and needle faces along a
 /// jagged border make every patch meet the border's own faces) are grown by the faces within
 /// 1, then 2, then 3 vertex rings of their border and filled again; a grown hole that still
@@ -537,6 +566,7 @@ void step_grow_failed_holes(PolygonMesh& pm, VertexPointMap vpm, const GeomTrait
   Step_timer timer(result, "failed holes grown", visitor);
   timer.count("holes", double(failed.size()));
   Region_replacement_report total;
+  std::size_t not_grown = 0;
   for (int rings = 1; rings <= max_hole_growth_rings && !failed.empty(); ++rings) {
     // The groups again: a grown hole put back has new halfedges; its key point finds it.
     std::map<Point, Group> group_at;
@@ -545,10 +575,23 @@ void step_grow_failed_holes(PolygonMesh& pm, VertexPointMap vpm, const GeomTrait
         group_at.emplace(get(vpm, target(h, pm)), group);
     std::vector<std::vector<face_descriptor>> regions;
     std::vector<std::size_t> in_round;
+    std::vector<bool> too_long(failed.size(), false);  // stays failed, not grown any further
     for (std::size_t i = 0; i < failed.size(); ++i) {
       auto it = group_at.find(keys[i]);
       if (it == group_at.end()) continue;
-      regions.push_back(faces_within_rings(pm, group_vertices(pm, it->second), rings));
+      std::vector<face_descriptor> region =
+          faces_within_rings(pm, group_vertices(pm, it->second), rings);
+      if (!faces_fit_the_border(pm, vpm, region, it->second)) {
+        result.holes.holes[failed[i]].notes.push_back(
+            "not grown: the faces within " + std::to_string(rings) +
+            " vertex ring(s) of its border are longer than " +
+            std::to_string(int(max_grown_face_to_border_edge)) +
+            "x its longest border edge (not a scanned border; growing would rebuild them)");
+        ++not_grown;
+        too_long[i] = true;
+        continue;
+      }
+      regions.push_back(std::move(region));
       in_round.push_back(i);
     }
     const Region_replacement_report round =
@@ -560,6 +603,7 @@ void step_grow_failed_holes(PolygonMesh& pm, VertexPointMap vpm, const GeomTrait
     std::size_t filled_now = 0;
     for (std::size_t i = 0; i < failed.size(); ++i) {
       Hole_fill_report& hole = result.holes.holes[failed[i]];
+      if (too_long[i]) continue;
       if (!done[i]) {
         still_failed.push_back(failed[i]);
         still_keys.push_back(keys[i]);
@@ -579,7 +623,8 @@ void step_grow_failed_holes(PolygonMesh& pm, VertexPointMap vpm, const GeomTrait
   }
   timer.count("faces_removed", double(total.faces_removed));
   timer.count("faces_added", double(total.faces_added));
-  timer.count("still_failed", double(failed.size()));
+  timer.count("still_failed", double(failed.size() + not_grown));
+  if (not_grown > 0) timer.count("not_grown_faces_too_long", double(not_grown));
   if (total.faces_not_restored > 0) {
     timer.count("faces_not_restored", double(total.faces_not_restored));
     timer.step().notes.push_back(std::to_string(total.faces_not_restored) +
@@ -610,9 +655,12 @@ void step_fill_meeting_other_parts(PolygonMesh& pm, VertexPointMap vpm, const Ge
   if (failed_at.empty()) return;
   Step_timer timer(result, "failed holes filled against other parts", visitor);
   // Only parts that already meet another part (an assembly): a patch must not create the first
-  // contact between two parts that were apart.
-  const auto pairs = bounded_self_intersections(pm).pairs;
+  // contact between two parts that were apart. A mesh of one part needs no enumeration.
   const auto component = face_components(pm);
+  const bool one_part = std::all_of(component.begin(), component.end(),
+                                    [](const auto& entry) { return entry.second == 0; });
+  if (one_part) return;
+  const auto pairs = bounded_self_intersections(pm).pairs;
   std::unordered_set<std::size_t> in_contact;
   for (const auto& pair : pairs)
     if (component.at(pair.first) != component.at(pair.second))

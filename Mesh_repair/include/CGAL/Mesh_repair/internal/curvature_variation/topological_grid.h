@@ -11,6 +11,7 @@
 
 #include <CGAL/Mesh_repair/internal/core_inline.h>
 #include <CGAL/Mesh_repair/hole_filling/fill_result.h>
+#include <CGAL/Mesh_repair/internal/hole_filling/cubic_search_limit.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
@@ -138,16 +139,32 @@ bool fill_with_disc_grid(PolygonMesh& pm,
   return true;
 }
 
-/// Fills the hole with Liepa's triangulation refined to the surrounding density.
+/// Fills the hole with Liepa's triangulation refined to the surrounding density, under the
+/// bounds of `fill_hole_liepa` (cubic_search_limit.h): no planar self-crossing border, no
+/// exhaustive search past `max_cubic_search_edges`.
 template <class PolygonMesh, class VertexPointMap>
 bool fill_with_refined_liepa(PolygonMesh& pm,
                              typename boost::graph_traits<PolygonMesh>::halfedge_descriptor border,
                              VertexPointMap vpm, double density_control_factor,
                              Fill_patch<PolygonMesh>& patch, std::string& failure) {
   namespace PMP = CGAL::Polygon_mesh_processing;
-  PMP::triangulate_and_refine_hole(
-      pm, border, std::back_inserter(patch.faces), std::back_inserter(patch.vertices),
-      CGAL::parameters::vertex_point_map(vpm).density_control_factor(density_control_factor));
+  std::vector<typename boost::property_traits<VertexPointMap>::value_type> corners;
+  for (auto h : CGAL::halfedges_around_face(border, pm)) corners.push_back(get(vpm, target(h, pm)));
+  failure = cgal_triangulation_refusal(corners);
+  if (!failure.empty()) return false;
+  Cubic_search_limit limit;
+  try {
+    PMP::triangulate_and_refine_hole(
+        pm, border, std::back_inserter(patch.faces), std::back_inserter(patch.vertices),
+        CGAL::parameters::vertex_point_map(vpm)
+            .density_control_factor(density_control_factor)
+            .do_not_use_cubic_algorithm(corners.size() > max_cubic_search_edges)
+            .visitor(limit));
+  } catch (const Cubic_search_too_large&) {
+    failure = "CGAL's triangulation needs an exhaustive search over more than " +
+              std::to_string(max_cubic_search_edges) + " border vertices (O(n^3)); not run";
+    return false;
+  }
   if (patch.faces.empty()) {
     failure = "Liepa's triangulation found no valid triangulation of the contour";
     return false;

@@ -109,25 +109,21 @@ std::vector<typename boost::graph_traits<PolygonMesh>::face_descriptor> patch_wi
 
 /// Number of pairs of intersecting triangles of `range` (a degenerate face counts as a pair with
 /// itself) that involve at least one face of `patch`, decided with the exact predicates of
-/// `traits` by CGAL's `self_intersections`. Pairs of two other faces existed before the fill.
-/// The enumeration stops at the pair limit of the range (internal/bounded_pairs.h): around a
-/// patch whose surroundings intersect themselves that much (a self-overlapping fan), the patch
-/// cannot be checked within the bound and counts as intersecting (at least one pair).
+/// `traits` by CGAL's test of two faces. Pairs of two other faces existed before the fill and
+/// are not examined (internal/bounded_pairs.h). The enumeration stops at the pair limit of the
+/// range: a patch that meets its surroundings that often counts as intersecting (at least one).
 template <class PolygonMesh, class VertexPointMap, class GeomTraits>
 std::size_t pairs_involving_patch(
     const std::vector<typename boost::graph_traits<PolygonMesh>::face_descriptor>& range,
     const PolygonMesh& pm, const Fill_patch<PolygonMesh>& patch, VertexPointMap vpm,
     const GeomTraits& traits) {
   using face_descriptor = typename boost::graph_traits<PolygonMesh>::face_descriptor;
-  const auto found =
-      bounded_self_intersections(range, pm, default_pair_limit(range.size()),
-                                 CGAL::parameters::vertex_point_map(vpm).geom_traits(traits));
   const std::unordered_set<face_descriptor> in_patch(patch.faces.begin(), patch.faces.end());
-  const auto pairs =
-      std::size_t(std::count_if(found.pairs.begin(), found.pairs.end(), [&](const auto& pair) {
-        return in_patch.count(pair.first) > 0 || in_patch.count(pair.second) > 0;
-      }));
-  return found.truncated ? std::max<std::size_t>(pairs, 1) : pairs;
+  std::vector<face_descriptor> patch_faces, others;
+  for (face_descriptor f : range) (in_patch.count(f) ? patch_faces : others).push_back(f);
+  const auto found = bounded_intersections_involving(patch_faces, others, pm,
+                                                     default_pair_limit(range.size()), vpm, traits);
+  return found.truncated ? std::max<std::size_t>(found.pairs.size(), 1) : found.pairs.size();
 }
 
 /// Bounding boxes of the faces a new patch must not meet: every face of the mesh when the

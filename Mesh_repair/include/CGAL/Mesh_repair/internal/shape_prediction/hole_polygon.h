@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <cmath>
 #include <utility>
+#include <unordered_set>
 #include <vector>
 
 namespace CGAL {
@@ -77,12 +78,18 @@ typename Kernel::Vector_3 fitted_vertex_normal(
   using Vector_3 = typename Kernel::Vector_3;
   using vertex_descriptor = typename boost::graph_traits<PolygonMesh>::vertex_descriptor;
   if (n0.squared_length() == 0) return n0;
+  // At most `max_fit_vertices`: next to the centre of a fan of n triangles the two rings hold
+  // the whole fan, and n border vertices would cost O(n^2).
+  constexpr std::size_t max_fit_vertices = 256;
   std::vector<vertex_descriptor> ring{v};
+  std::unordered_set<vertex_descriptor> in_ring{v};
   for (std::size_t begin = 0, depth = 0; depth < 2; ++depth) {
     const std::size_t end = ring.size();
-    for (std::size_t k = begin; k < end; ++k) {
-      for (auto w : vertices_around_target(halfedge(ring[k], pm), pm))
-        if (std::find(ring.begin(), ring.end(), w) == ring.end()) ring.push_back(w);
+    for (std::size_t k = begin; k < end && ring.size() < max_fit_vertices; ++k) {
+      for (auto w : vertices_around_target(halfedge(ring[k], pm), pm)) {
+        if (ring.size() == max_fit_vertices) break;
+        if (in_ring.insert(w).second) ring.push_back(w);
+      }
     }
     begin = end;
   }
