@@ -45,6 +45,7 @@ def off_variants():
     for t in T:
         binary += struct.pack(">iiiii", 3, *t, 0)
     write(READERS, "binary.off", binary)
+    write(READERS, "cr_only_bom.off", "\ufeffOFF\r4 4 0\r" + (pts + tris).replace("\n", "\r"))
     write(READERS, "quad_and_short.off",
           "OFF\n4 3 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n2 0 1\n1 3\n")
 
@@ -53,6 +54,10 @@ def obj_variants():
     pts = "".join("v %g %g %g\n" % p for p in P)
     write(READERS, "continuation.obj", pts +
           "".join("f %d \\\n  %d \\\n %d\n" % tuple(i + 1 for i in t) for t in T))
+    write(READERS, "cr_only.obj", "# classic Mac line ends\r" + (pts + "".join(
+        "f %d %d %d\n" % tuple(i + 1 for i in t) for t in T)).replace("\n", "\r"))
+    write(READERS, "bom.obj", "\ufeff" + pts + "".join(
+        "f %d %d %d\r\n" % tuple(i + 1 for i in t) for t in T))
     write(READERS, "negative.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -1 -2\n"
           "v 0 0 1\nf -4 -3 -1\nf -4 -1 -2\nf -3 -2 -1\n")
     write(READERS, "texture_normal.obj", "mtllib a.mtl\no tet\n" + pts +
@@ -80,6 +85,7 @@ def stl_variants():
         text += "   endloop\nendfacet\n\n"
     text += "endsolid tet\n"
     write(READERS, "ascii_whitespace.stl", text)
+    write(READERS, "ascii_bom_cr_only.stl", "\ufeff" + text.replace("\r\n", "\n").replace("\n", "\r"))
     write(READERS, "ascii_one_line.stl", "solid t " + " ".join(
         "FACET NORMAL 0 0 1 OUTER LOOP " + " ".join("VERTEX %g %g %g" % P[i] for i in t) +
         " ENDLOOP ENDFACET" for t in T) + "\nENDSOLID t\n")

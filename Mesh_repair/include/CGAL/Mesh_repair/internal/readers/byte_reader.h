@@ -96,34 +96,35 @@ class Byte_reader {
     return true;
   }
 
-  /// Reads one text line (without its '\n' or "\r\n") into `line`; false at the end of data.
-  /// A NUL byte or another control character is an error (text formats never contain one), and
-  /// so is a line longer than `max_line_bytes`; both are found before the line is complete, so
-  /// a sparse file of zeros is refused at its first zero byte.
+  /// Reads one text line into `line`; false at the end of data. A line ends at "\n", "\r\n" or a
+  /// lone "\r" (classic Mac files), which is not part of it; a UTF-8 byte order mark at the
+  /// start of the file is dropped. A NUL byte or another control character is an error (text
+  /// formats never contain one), and so is a line longer than `max_line_bytes`; both are found
+  /// before the line is complete, so a sparse file of zeros is refused at its first zero byte.
   bool read_line(std::string& line) {
     line.clear();
     if (peek() < 0) return false;
     while (true) {
       if (current_ == end_ && !refill()) break;
-      const char* stop = static_cast<const char*>(std::memchr(current_, '\n', end_ - current_));
-      const char* until = stop ? stop : end_;
-      for (const char* c = current_; c != until; ++c) {
-        const unsigned char u = static_cast<unsigned char>(*c);
-        if (u < 32 && u != '\t' && u != '\f' && u != '\v' && u != '\r')
+      const char* until = current_;
+      for (; until != end_ && *until != '\n' && *until != '\r'; ++until) {
+        const unsigned char u = static_cast<unsigned char>(*until);
+        if (u < 32 && u != '\t' && u != '\f' && u != '\v')
           fail_at_line(line_ + 1, "unexpected control byte 0x" + hex(u) + " (byte offset " +
-                                      std::to_string(consumed_ + std::uintmax_t(c - begin_)) +
+                                      std::to_string(consumed_ + std::uintmax_t(until - begin_)) +
                                       ") in a text file");
       }
       if (line.size() + std::size_t(until - current_) > max_line_bytes)
         fail_at_line(line_ + 1, "line longer than " + std::to_string(max_line_bytes) + " bytes");
       line.append(current_, until);
       current_ = until;
-      if (stop) {
-        ++current_;
+      if (until != end_) {
+        const char line_end = *current_++;
+        if (line_end == '\r' && peek() == '\n') ++current_;  // peek refilled if needed
         break;
       }
     }
-    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line_ == 0 && line.compare(0, 3, "\xEF\xBB\xBF") == 0) line.erase(0, 3);
     ++line_;
     return true;
   }

@@ -54,9 +54,14 @@ class Point_indexer {
   std::unordered_map<Key, std::size_t, Hash> map_;
 };
 
-// True when the first word (after any whitespace) is "solid", in any case.
+// True when the first word (after a UTF-8 byte order mark and any whitespace) is "solid", in
+// any case.
 inline bool stl_starts_with_solid(Byte_reader& in) {
   int c = in.get();
+  if (c == 0xEF) {
+    if (in.get() != 0xBB || in.get() != 0xBF) return false;
+    c = in.get();
+  }
   for (int skipped = 0; c == ' ' || c == '\t' || c == '\r' || c == '\n'; ++skipped) {
     if (skipped > 4096) return false;
     c = in.get();
