@@ -530,6 +530,25 @@ TEST(DetectDefects, SelfOverlappingStarStopsAtThePairLimitAndSaysTheCountIsALowe
   EXPECT_EQ(coplanar.overlaps.size(), limit);
 }
 
+// A {2000/3} star fanned: 1998 thin triangles whose boxes nearly all meet one another (about
+// 2 million box pairs) though far fewer triangles intersect. The box passes stop after ten
+// times the pair limit of candidates, below the pair limit of pairs, and say the count is a
+// lower bound.
+TEST(DetectDefects, BoxPassesStopAtTheCandidateLimitOnAFanOfThinTriangles) {
+  const Mesh star = fan_of_star_polygon(2000, 3);
+  const std::size_t pair_limit = MR::internal::default_pair_limit(num_faces(star));
+  ASSERT_EQ(pair_limit, 100000u);
+  const MR::Defect_report report = MR::detect_defects(star);
+  ASSERT_TRUE(report.self_intersections_checked);
+  EXPECT_TRUE(report.self_intersections_truncated);
+  EXPECT_GT(report.self_intersections.size(), 0u);
+  EXPECT_LT(report.self_intersections.size(), pair_limit);  // stopped by the candidates
+  for (const auto& pair : report.self_intersections) EXPECT_NE(pair.first, pair.second);
+  const MR::Defect_report coplanar = detect_with_pair_limit(star, 0, false);
+  EXPECT_TRUE(coplanar.overlaps_truncated);
+  EXPECT_LT(coplanar.overlaps.size(), pair_limit);
+}
+
 class RealMesh : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(RealMesh, BorderCycleCountEqualsCgalExtractBoundaryCycles) {

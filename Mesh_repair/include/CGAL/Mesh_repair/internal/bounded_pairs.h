@@ -142,30 +142,115 @@ inline std::size_t candidate_limit(std::size_t elements) {
   return 10 * default_pair_limit(elements);
 }
 
-/// CGAL's `self_intersections` on `faces`, stopped after `limit` pairs (0: the default limit
-/// of the face count). Sequential: CGAL's Parallel_tag pass collects every candidate pair in a
-/// concurrent vector before writing any (no early stop, memory quadratic on these inputs), and
-/// costs 2.7x the processor time of the sequential one (bench_check, 1.1 M faces).
+/// Intersecting face pairs by CGAL's box passes and CGAL's own test of two faces
+/// (`Strict_intersect_faces`: a shared vertex or edge is no intersection), as in
+/// `self_intersections`, with two bounds: at most `limit` pairs, and at most
+/// `candidate_limit` box pairs examined (the faces' boxes overlap, not always the faces). On a
+/// fan of n thin triangles overlapping at its centre nearly every box meets every other:
+/// n^2 / 2 candidates (50 M and 25 s for a {9998/3} star) for few pairs. Past either bound the
+/// enumeration stops and `truncated` says the count is a lower bound. A degenerate face of
+/// `first` is a pair with itself. Sequential: CGAL's Parallel_tag pass collects every candidate
+/// pair in a concurrent vector before writing any (no early stop, memory quadratic on these
+/// inputs), and costs 2.7x the processor time of the sequential one (bench_check, 1.1 M faces).
+template <class TriangleMesh, class VertexPointMap, class GeomTraits>
+class Bounded_face_intersections {
+ public:
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+  using Pair = std::pair<face_descriptor, face_descriptor>;
+
+  Bounded_face_intersections(const TriangleMesh& tm, VertexPointMap vpm, const GeomTraits& traits)
+      : tm_(tm), vpm_(vpm), traits_(traits) {}
+
+  /// Pairs within `first`, and between `first` and `second` when `second` is given.
+  template <class FaceRange>
+  Bounded_pairs<Pair> find(const FaceRange& first, const std::vector<face_descriptor>* second,
+                           std::size_t limit) const {
+    Bounded_pairs<Pair> found;
+    Bounded_collector<Pair> collector(found, limit);
+    std::vector<Box> first_boxes, second_boxes;
+    collector.run([&](Bounded_collector<Pair>& c) {
+      first_boxes = boxes_of(first, &c);
+      if (second) second_boxes = boxes_of(*second, nullptr);
+    });
+    if (found.truncated) return found;
+    std::vector<const Box*> a = pointers(first_boxes), b = pointers(second_boxes);
+    Pair_budget budget(candidate_limit(a.size() + b.size()));
+    using Inserter = typename Bounded_collector<Pair>::Inserter;
+    const CGAL::Polygon_mesh_processing::internal::Strict_intersect_faces<
+        Box, TriangleMesh, VertexPointMap, GeomTraits, Inserter>
+        test(tm_, vpm_, traits_, collector.inserter());
+    auto examine = [&](const Box* x, const Box* y) {
+      budget.spend();
+      test(x, y);
+    };
+    const std::ptrdiff_t cutoff = 2000;  // CGAL's own in self_intersections
+    budget.run([&] {
+      collector.run([&](Bounded_collector<Pair>&) {
+        CGAL::box_self_intersection_d<CGAL::Sequential_tag>(a.begin(), a.end(), examine, cutoff);
+        if (second)
+          CGAL::box_intersection_d<CGAL::Sequential_tag>(a.begin(), a.end(), b.begin(), b.end(),
+                                                         examine, cutoff);
+      });
+    });
+    found.truncated = found.truncated || budget.exhausted();
+    return found;
+  }
+
+ private:
+  using Box =
+      CGAL::Box_intersection_d::Box_with_info_d<double, 3, face_descriptor,
+                                                CGAL::Box_intersection_d::ID_FROM_BOX_ADDRESS>;
+
+  template <class FaceRange>
+  std::vector<Box> boxes_of(const FaceRange& faces, Bounded_collector<Pair>* degenerate) const {
+    std::vector<Box> boxes;
+    for (face_descriptor f : faces) {
+      const auto h = halfedge(f, tm_);
+      const auto& p = get(vpm_, target(h, tm_));
+      const auto& q = get(vpm_, target(next(h, tm_), tm_));
+      const auto& r = get(vpm_, source(h, tm_));
+      if (!traits_.collinear_3_object()(p, q, r))
+        boxes.emplace_back(p.bbox() + q.bbox() + r.bbox(), f);
+      else if (degenerate)
+        degenerate->add(Pair(f, f));
+    }
+    return boxes;
+  }
+  static std::vector<const Box*> pointers(const std::vector<Box>& boxes) {
+    std::vector<const Box*> result;
+    result.reserve(boxes.size());
+    for (const Box& b : boxes) result.push_back(&b);
+    return result;
+  }
+
+  const TriangleMesh& tm_;
+  VertexPointMap vpm_;
+  const GeomTraits& traits_;
+};
+
+/// The pairs of intersecting faces of `face_range` (`Bounded_face_intersections`), stopped after
+/// `limit` pairs (0: the default limit of the face count) or the candidate limit; `np` may hold
+/// `vertex_point_map` and `geom_traits`.
 template <class FaceRange, class TriangleMesh, class NamedParameters>
 Bounded_pairs<std::pair<typename boost::graph_traits<TriangleMesh>::face_descriptor,
                         typename boost::graph_traits<TriangleMesh>::face_descriptor>>
 bounded_self_intersections(const FaceRange& face_range, const TriangleMesh& tm, std::size_t limit,
                            const NamedParameters& np) {
-  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
-  using Pair = std::pair<face_descriptor, face_descriptor>;
-  return bounded_pairs<Pair>(
-      pair_limit(limit, num_faces(tm)), [&](Bounded_collector<Pair>& collector) {
-        CGAL::Polygon_mesh_processing::self_intersections<CGAL::Sequential_tag>(
-            face_range, tm, collector.inserter(), np);
-      });
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using GT = typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type;
+  using VPM = typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::const_type;
+  const GT traits = choose_parameter<GT>(get_parameter(np, CGAL::internal_np::geom_traits));
+  const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                   get_const_property_map(boost::vertex_point, tm));
+  return Bounded_face_intersections<TriangleMesh, VPM, GT>(tm, vpm, traits)
+      .find(face_range, nullptr, pair_limit(limit, num_faces(tm)));
 }
 
-/// The pairs of CGAL's `self_intersections` over `first` and `second` together that hold a face
-/// of `first`: pairs within `first` and pairs of `first` x `second`, stopped after `limit`
-/// pairs. Pairs within `second` are not examined: around a patch whose surroundings overlap
-/// themselves everywhere (a self-overlapping fan) they are quadratic in number and already known.
-/// Two faces are tested by CGAL's own test (a shared vertex or edge is no intersection) and a
-/// degenerate face of `first` is a pair with itself, as in `self_intersections`.
+/// The pairs of `Bounded_face_intersections` over `first` and `second` together that hold a
+/// face of `first`: pairs within `first` and pairs of `first` x `second`. Pairs within `second`
+/// are not examined: around a patch whose surroundings overlap themselves everywhere (a
+/// self-overlapping fan) they are quadratic in number and already known.
 template <class TriangleMesh, class VertexPointMap, class GeomTraits>
 Bounded_pairs<std::pair<typename boost::graph_traits<TriangleMesh>::face_descriptor,
                         typename boost::graph_traits<TriangleMesh>::face_descriptor>>
@@ -173,41 +258,8 @@ bounded_intersections_involving(
     const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& first,
     const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& second,
     const TriangleMesh& tm, std::size_t limit, VertexPointMap vpm, const GeomTraits& traits) {
-  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
-  using Pair = std::pair<face_descriptor, face_descriptor>;
-  using Box =
-      CGAL::Box_intersection_d::Box_with_info_d<double, 3, face_descriptor,
-                                                CGAL::Box_intersection_d::ID_FROM_BOX_ADDRESS>;
-  return bounded_pairs<Pair>(limit, [&](Bounded_collector<Pair>& collector) {
-    auto boxes_of = [&](const std::vector<face_descriptor>& faces, bool degenerate_is_a_pair) {
-      std::vector<Box> boxes;
-      boxes.reserve(faces.size());
-      for (face_descriptor f : faces) {
-        const auto h = halfedge(f, tm);
-        const auto& p = get(vpm, target(h, tm));
-        const auto& q = get(vpm, target(next(h, tm), tm));
-        const auto& r = get(vpm, source(h, tm));
-        if (!traits.collinear_3_object()(p, q, r))
-          boxes.emplace_back(p.bbox() + q.bbox() + r.bbox(), f);
-        else if (degenerate_is_a_pair)
-          collector.add(Pair(f, f));
-      }
-      return boxes;
-    };
-    std::vector<Box> first_boxes = boxes_of(first, true), second_boxes = boxes_of(second, false);
-    std::vector<const Box*> first_ptr, second_ptr;
-    for (const Box& b : first_boxes) first_ptr.push_back(&b);
-    for (const Box& b : second_boxes) second_ptr.push_back(&b);
-    using Inserter = typename Bounded_collector<Pair>::Inserter;
-    CGAL::Polygon_mesh_processing::internal::Strict_intersect_faces<
-        Box, TriangleMesh, VertexPointMap, GeomTraits, Inserter>
-        test(tm, vpm, traits, collector.inserter());
-    const std::ptrdiff_t cutoff = 2000;  // CGAL's own in self_intersections
-    CGAL::box_self_intersection_d<CGAL::Sequential_tag>(first_ptr.begin(), first_ptr.end(), test,
-                                                        cutoff);
-    CGAL::box_intersection_d<CGAL::Sequential_tag>(
-        first_ptr.begin(), first_ptr.end(), second_ptr.begin(), second_ptr.end(), test, cutoff);
-  });
+  return Bounded_face_intersections<TriangleMesh, VertexPointMap, GeomTraits>(tm, vpm, traits)
+      .find(first, &second, limit);
 }
 
 /// The same on every face of `tm` with its default point map.
