@@ -799,3 +799,60 @@ TEST(AutomaticRepair, TheOutlineOfALargeOpenSheetIsLeftOpenAndCounted) {
 }
 
 }  // namespace
+
+// A sphere with a hole holding a scan fragment (one triangle that shares the position of a border
+// vertex but no vertex: what the soup repair leaves of a face attached at a single vertex), a
+// small closed sphere and a small open disc far away.
+Mesh sphere_with_a_fragment_in_its_hole() {
+  Mesh mesh;
+  MR::make_sphere(mesh, Point(0, 0, 0), 1.0, 4);
+  punch_hole(mesh, Point(1, 0, 0), 0.3);
+  mesh.collect_garbage();
+  Point corner;
+  double nearest = std::numeric_limits<double>::max();
+  for (auto h : halfedges(mesh))
+    if (is_border(h, mesh) &&
+        CGAL::squared_distance(mesh.point(target(h, mesh)), Point(1, 0, 0)) < nearest) {
+      corner = mesh.point(target(h, mesh));
+      nearest = CGAL::squared_distance(corner, Point(1, 0, 0));
+    }
+  const auto a = mesh.add_vertex(corner);
+  const auto b = mesh.add_vertex(Point(0.99, 0.1, 0.0));
+  const auto c = mesh.add_vertex(Point(0.99, 0.0, 0.1));
+  CGAL::Euler::add_face(std::vector<Mesh::Vertex_index>{a, b, c}, mesh);
+  MR::make_sphere(mesh, Point(5, 0, 0), 0.5, 1);
+  MR::make_height_field<Mesh, Point>(mesh, 4, 4.4, 2, 2.4, 3, 3,
+                                     [](double, double) { return 0.0; });
+  return mesh;
+}
+
+TEST(AutomaticRepair, AFragmentInAHoleIsRemovedAndCountedAndOtherPartsStay) {
+  Mesh mesh = sphere_with_a_fragment_in_its_hole();
+  ASSERT_EQ(support::connected_components(mesh), 4u);
+  const std::size_t faces_before = num_faces(mesh);
+  const MR::Repair_result result = MR::automatic_repair(mesh);
+  const MR::Repair_step_report* step = find_step(result, "fragments in holes");
+  ASSERT_NE(step, nullptr);
+  EXPECT_EQ(step->count("fragments_removed"), 1.0);
+  EXPECT_EQ(step->count("faces_removed"), 1.0);
+  EXPECT_EQ(result.holes.filled, 1u);
+  // The sphere closed; the far sphere and the disc (an open sheet, not in a hole) kept.
+  EXPECT_EQ(support::connected_components(mesh), 3u);
+  EXPECT_EQ(count_border_cycles(mesh), 1u);
+  EXPECT_EQ(result.sheet_borders_left_open, 1u);
+  EXPECT_GT(num_faces(mesh), faces_before - 1);
+  EXPECT_TRUE(result.valid && result.manifold);
+  EXPECT_EQ(result.status(), MR::Repair_status::complete_except_kept);
+}
+
+TEST(AutomaticRepair, AFragmentIsKeptWhenAskedAndTheReportMatchesTheMesh) {
+  Mesh mesh = sphere_with_a_fragment_in_its_hole();
+  const MR::Repair_result result =
+      MR::automatic_repair(mesh, MR::parameters::remove_hole_fragments(false));
+  EXPECT_EQ(find_step(result, "fragments in holes"), nullptr);
+  // Whatever became of the fragment, what the report says is open is what the mesh shows.
+  EXPECT_EQ(count_border_cycles(mesh), result.border_cycles_left);
+  EXPECT_EQ(result.border_cycles_left,
+            result.sheet_borders_left_open + result.holes_too_large + result.holes.failed);
+  EXPECT_TRUE(result.valid);
+}

@@ -44,8 +44,11 @@ const char* const repair_help =
     "  --sheet-border-ratio F   a border whose flat filling has more than F x the area of its\n"
     "                           component is an open sheet's outline, left open (default 0.9)\n"
     "  --fill-sheet-borders     fill the outlines of open sheets too\n"
-    "  --keep-components        keep every connected component (default)\n"
+    "  --keep-components        keep every connected component (default; fragments in holes\n"
+    "                           aside, see --keep-fragments)\n"
     "  --largest-component      keep only the largest component (removed ones are counted)\n"
+    "  --keep-fragments         keep the small open fragments found in holes (by default they\n"
+    "                           are removed before filling, and counted)\n"
     "  --no-ring-holes          fill islands and their hole separately\n"
     "  --no-self-intersections  neither count nor remove self-intersections (faster)\n"
     "  --keep-self-intersections  keep the input's self-intersections (default: the faces\n"
@@ -76,6 +79,7 @@ const char* const repair_help =
 namespace {
 
 const std::set<std::string> repair_flags = {"--keep-components",
+                                            "--keep-fragments",
                                             "--largest-component",
                                             "--no-ring-holes",
                                             "--no-self-intersections",
@@ -254,6 +258,7 @@ int repair_one(const Arguments& args) {
                     args.get_int("--max-hole-edges", std::numeric_limits<long long>::max())))
                 .sheet_border_ratio(sheet_border_ratio(args))
                 .keep_largest_component(args.has("--largest-component"))
+                .remove_hole_fragments(!args.has("--keep-fragments"))
                 .detect_ring_holes(!args.has("--no-ring-holes"))
                 .detect_self_intersections(!args.has("--no-self-intersections"))
                 .repair_self_intersections(!args.has("--keep-self-intersections") &&

@@ -101,6 +101,7 @@ struct Repair_options {
   bool largest_component = false, ring_holes = true, self_intersections = true;
   bool remove_self_intersections = true;
   bool merge_intersecting_solids = false;
+  bool remove_hole_fragments = true;
   int threads = 0;
   unsigned seed = 0;
 };

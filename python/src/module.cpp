@@ -365,6 +365,7 @@ PYBIND11_MODULE(_core, m) {
         .get("self_intersections", o.self_intersections)
         .get("remove_self_intersections", o.remove_self_intersections)
         .get("merge_intersecting_solids", o.merge_intersecting_solids)
+        .get("remove_hole_fragments", o.remove_hole_fragments)
         .get("threads", o.threads)
         .get("seed", o.seed)
         .finish();

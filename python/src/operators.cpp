@@ -289,6 +289,7 @@ Operator_output repair(Mesh_input& input, const Repair_options& options, Python_
                 .repair_self_intersections(options.remove_self_intersections &&
                                            options.self_intersections)
                 .merge_intersecting_solids(options.merge_intersecting_solids)
+                .remove_hole_fragments(options.remove_hole_fragments)
                 .number_of_threads(options.threads)
                 .random_seed(options.seed)
                 .visitor(std::ref(visitor)));

@@ -452,3 +452,30 @@ def test_two_threads_repair_two_meshes_at_once():
         results = list(pool.map(lambda m: mesh_repair.repair(*m), meshes))
     assert [r.report["repair"]["holes_filled"] for r in results] == [1, 3]
     assert all(border_cycles(r.vertices, r.faces) == 0 for r in results)
+
+
+def fragment_in_hole():
+    """A sphere with a hole at (0, 0, 1) holding a one-face fragment that shares a border vertex
+    (the soup repair splits that vertex, so the fragment is a component of its own)."""
+    v, f = holed_sphere(4, holes=1)
+    edges = {}
+    for a, b, c in f:
+        for e in ((a, b), (b, c), (c, a)):
+            edges[e] = edges.get(e, 0) + 1
+    border = {a for (a, b) in edges if (b, a) not in edges}
+    corner = max(border, key=lambda i: v[i][2])
+    v = np.vstack([v, [[0.1, 0.0, 0.995], [0.0, 0.1, 0.995]]])
+    f = np.vstack([f, [[corner, len(v) - 2, len(v) - 1]]])
+    return v, f
+
+
+def test_a_fragment_in_a_hole_is_removed_unless_kept():
+    v, f = fragment_in_hole()
+    result = mesh_repair.repair(v, f)
+    repair = result.report["repair"]
+    assert repair["status"] == "complete", repair["remaining"]
+    steps = {s["name"]: s for s in repair["steps"]}
+    assert steps["fragments in holes"]["counts"]["fragments_removed"] == 1
+    assert border_cycles(result.vertices, result.faces) == 0
+    kept = mesh_repair.repair(v, f, remove_hole_fragments=False).report["repair"]
+    assert "fragments in holes" not in {s["name"] for s in kept["steps"]}

@@ -38,6 +38,8 @@ Repair_options repair_options_from(const PolygonMesh& pm, const NamedParameters&
       get_parameter(np, internal_np::repair_self_intersections_t{}), o.repair_self_intersections);
   o.merge_intersecting_solids = choose_parameter(
       get_parameter(np, internal_np::merge_intersecting_solids_t{}), o.merge_intersecting_solids);
+  o.remove_hole_fragments = choose_parameter(
+      get_parameter(np, internal_np::remove_hole_fragments_t{}), o.remove_hole_fragments);
   o.fill = fill_options_from(np);
   return o;
 }
@@ -124,7 +126,16 @@ Repair_options repair_options_from(const PolygonMesh& pm, const NamedParameters&
 ///   \cgalParamNBegin{keep_largest_component}
 ///     \cgalParamDescription{remove every connected component but the largest (counted)}
 ///     \cgalParamType{bool}
-///     \cgalParamDefault{`false`: every component is kept}
+///     \cgalParamDefault{`false`: every component is kept (but see `remove_hole_fragments`)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{remove_hole_fragments}
+///     \cgalParamDescription{before the holes are filled, remove the fragments of scans found in
+///       them: open components of at most 10 faces and at most 1/100 of the faces of a part,
+///       attached at a vertex to the border of one of that part's holes (every patch of the hole
+///       would meet them, and they would stay open). Counted in the step "fragments in holes";
+///       closed components are never removed. Doc: automatic_repair.md, "Fragments in holes"}
+///     \cgalParamType{bool}
+///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{detect_self_intersections}
 ///     \cgalParamDescription{count self-intersections of the input and the output}

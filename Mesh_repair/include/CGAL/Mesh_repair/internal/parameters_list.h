@@ -74,6 +74,7 @@ MESH_REPAIR_PARAMETER(number_of_threads)
 MESH_REPAIR_PARAMETER(keep_largest_component)     // bool: drop all but the largest component
 MESH_REPAIR_PARAMETER(repair_self_intersections)  // bool: replace self-intersecting faces
 MESH_REPAIR_PARAMETER(merge_intersecting_solids)  // bool: union of intersecting closed parts
+MESH_REPAIR_PARAMETER(remove_hole_fragments)      // bool: small open pieces in holes removed
 
 // hole benchmark (hole_benchmark.h)
 MESH_REPAIR_PARAMETER(number_of_holes)  // holes punched per mesh

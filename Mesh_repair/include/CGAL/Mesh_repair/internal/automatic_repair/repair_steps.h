@@ -57,6 +57,7 @@ struct Repair_options {
   bool detect_self_intersections = true;
   bool repair_self_intersections = true;
   bool merge_intersecting_solids = false;
+  bool remove_hole_fragments = true;
   Fill_options fill;
 };
 
@@ -464,6 +465,71 @@ void step_degenerate_faces(PolygonMesh& pm, VertexPointMap vpm, Repair_result& r
   if (!all_removed) timer.step().notes.push_back("some degenerate faces could not be removed");
 }
 
+/// The connected component (by edges) of every face (defined below).
+template <class PolygonMesh>
+std::unordered_map<typename boost::graph_traits<PolygonMesh>::face_descriptor, std::size_t>
+face_components(const PolygonMesh& pm);
+
+/// Scans leave fragments of a face or a few inside their holes, attached to the hole's border
+/// at a single vertex; the soup repair and the non-manifold step split them off as components of
+/// their own. Every patch of the hole meets them, and each would stay open as the outline of a
+/// sheet. A fragment is an open component of at most `max_fragment_faces` faces and at most
+/// `1 / max_fragment_share` of the faces of a part, with a vertex at the exact position of a
+/// border vertex of one of that part's holes (not outlines of open sheets, not islands of ring
+/// holes, which the filling bridges). Fragments are removed before the holes are filled, and
+/// counted; closed components and larger open ones are parts, never removed. Fragments floating
+/// free in a hole are kept: small CAD parts sit in the boxes of holes too.
+template <class PolygonMesh, class VertexPointMap>
+void step_remove_hole_fragments(PolygonMesh& pm, VertexPointMap vpm, const Repair_options& options,
+                                Any_visitor visitor, Repair_result& result) {
+  using face_descriptor = typename boost::graph_traits<PolygonMesh>::face_descriptor;
+  using Point = typename boost::property_traits<VertexPointMap>::value_type;
+  constexpr std::size_t max_fragment_share = 100, max_fragment_faces = 10;
+  const auto groups = hole_groups(pm, vpm, options.fill.detect_ring_holes);
+  if (groups.size() < 2) return;
+  Step_timer timer(result, "fragments in holes", visitor);
+  const auto component = face_components(pm);
+  std::size_t count = 0;
+  for (const auto& entry : component) count = (std::max)(count, entry.second + 1);
+  std::vector<std::vector<face_descriptor>> members(count);
+  for (auto f : faces(pm)) members[component.at(f)].push_back(f);
+  // The part of every border vertex of a hole; which components are open, which islands.
+  const std::vector<double> ratios = sheet_border_ratios(pm, vpm, groups);
+  std::vector<bool> open(count, false), island(count, false);
+  std::multimap<Point, std::size_t> hole_vertex_part;
+  for (std::size_t k = 0; k < groups.size(); ++k) {
+    const std::size_t part = component.at(face(opposite(groups[k].outer, pm), pm));
+    open[part] = true;
+    for (auto cycle : groups[k].islands)
+      open[component.at(face(opposite(cycle, pm), pm))] =
+          island[component.at(face(opposite(cycle, pm), pm))] = true;
+    if (ratios[k] > options.fill.sheet_border_ratio) continue;
+    for (auto h : halfedges_around_face(groups[k].outer, pm))
+      hole_vertex_part.emplace(get(vpm, target(h, pm)), part);
+  }
+  std::size_t fragments = 0, faces_removed = 0;
+  const std::size_t vertices_before = count_vertices(pm);
+  for (std::size_t c = 0; c < count; ++c) {
+    const std::size_t size = members[c].size();
+    if (!open[c] || island[c] || size > max_fragment_faces) continue;
+    bool touches = false;
+    for (auto f : members[c])
+      for (auto v : vertices_around_face(halfedge(f, pm), pm)) {
+        const auto range = hole_vertex_part.equal_range(get(vpm, v));
+        for (auto it = range.first; it != range.second; ++it)
+          touches = touches ||
+                    (it->second != c && size * max_fragment_share <= members[it->second].size());
+      }
+    if (!touches) continue;
+    ++fragments;
+    faces_removed += size;
+    for (face_descriptor f : members[c]) CGAL::Euler::remove_face(halfedge(f, pm), pm);
+  }
+  timer.count("fragments_removed", double(fragments));
+  timer.count("faces_removed", double(faces_removed));
+  timer.count("vertices_removed", double(vertices_before) - double(count_vertices(pm)));
+}
+
 template <class PolygonMesh>
 void step_largest_component(PolygonMesh& pm, Repair_result& result, Any_visitor visitor) {
   Step_timer timer(result, "largest component", visitor);
@@ -632,11 +698,6 @@ void step_grow_failed_holes(PolygonMesh& pm, VertexPointMap vpm, const GeomTrait
   }
 }
 
-/// The connected component (by edges) of every face (defined below).
-template <class PolygonMesh>
-std::unordered_map<typename boost::graph_traits<PolygonMesh>::face_descriptor, std::size_t>
-face_components(const PolygonMesh& pm);
-
 /// The holes still open, of parts that already meet another part, are filled once more with the
 /// faces of other parts no obstacle (`Fill_options::other_parts_are_obstacles`): a tube trimmed
 /// against a post has its open end on the post's face, where every patch touches the post. The
@@ -706,9 +767,12 @@ void step_fill_meeting_other_parts(PolygonMesh& pm, VertexPointMap vpm, const Ge
   timer.count("filled", double(filled));
 }
 
+/// Fills the holes, grows the failed ones, fills what is left against other parts; returns a
+/// border point of each hole of `result.holes`, which finds it again after later steps.
 template <class PolygonMesh, class VertexPointMap, class GeomTraits>
-void step_fill_holes(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
-                     const Repair_options& options, Any_visitor visitor, Repair_result& result) {
+std::vector<typename boost::property_traits<VertexPointMap>::value_type> step_fill_holes(
+    PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits, const Repair_options& options,
+    Any_visitor visitor, Repair_result& result) {
   const std::size_t faces_before = count_faces(pm), vertices_before = count_vertices(pm);
   const auto groups = hole_groups(pm, vpm, options.fill.detect_ring_holes);
   {
@@ -734,6 +798,7 @@ void step_fill_holes(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& trai
   // by the growth; what is left meets the other part wherever it is closed.
   if (!result.cancelled && options.fill.check_self_intersections)
     step_fill_meeting_other_parts(pm, vpm, traits, options, border_points, visitor, result);
+  return border_points;
 }
 
 /// The connected component (by edges) of every face.
@@ -1132,9 +1197,46 @@ void step_merge_intersecting_solids(PolygonMesh& pm, VertexPointMap vpm, const G
 /// Faces of all filled patches and their one-ring are not known here (regions were copied
 /// back), so the verification counts self-intersections of the whole output and compares with
 /// the input count: new pairs can only come from the repair.
-template <class PolygonMesh>
-void step_verify(const PolygonMesh& pm, const Repair_options& options, Repair_result& result,
-                 Any_visitor visitor) {
+/// Holes that the filling left open (failed, too large, outlines of sheets) whose border is gone
+/// from the output: a later step replaced or removed the faces around them (the growth of a
+/// neighbouring failed hole, the self-intersection removal). The report must say what the
+/// written mesh shows, so they are counted as closed later, with a note.
+template <class PolygonMesh, class VertexPointMap, class Point>
+void reconcile_open_holes(const PolygonMesh& pm, VertexPointMap vpm,
+                          const std::vector<Point>& border_points, Step_timer& timer,
+                          Repair_result& result) {
+  std::set<Point> on_border;
+  for (auto h : halfedges(pm))
+    if (is_border(h, pm)) on_border.insert(get(vpm, target(h, pm)));
+  std::size_t closed_later = 0;
+  Fill_result& holes = result.holes;
+  for (std::size_t k = 0; k < holes.holes.size() && k < border_points.size(); ++k) {
+    Hole_fill_report& hole = holes.holes[k];
+    if (hole.filled || on_border.count(border_points[k])) continue;
+    hole.notes.push_back(
+        "no longer open in the output: a later step (the growth of a failed hole, the "
+        "self-intersection removal) replaced or removed the faces around it (before: " +
+        hole.failure + ")");
+    if (hole.skipped) {
+      --holes.skipped;
+      if (hole.sheet_border) --holes.sheet_borders;
+    } else {
+      --holes.failed;
+    }
+    hole.failure.clear();
+    hole.skipped = hole.sheet_border = false;
+    hole.filled = true;
+    ++holes.filled;
+    ++closed_later;
+  }
+  result.sheet_borders_left_open = holes.sheet_borders;
+  result.holes_too_large = holes.skipped - holes.sheet_borders;
+  if (closed_later > 0) timer.count("open_holes_closed_later", double(closed_later));
+}
+
+template <class PolygonMesh, class VertexPointMap, class Point>
+void step_verify(const PolygonMesh& pm, VertexPointMap vpm, const std::vector<Point>& border_points,
+                 const Repair_options& options, Repair_result& result, Any_visitor visitor) {
   Step_timer timer(result, "verification", visitor);
   result.valid = CGAL::is_valid_polygon_mesh(pm);
   std::vector<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor> non_manifold;
@@ -1142,22 +1244,7 @@ void step_verify(const PolygonMesh& pm, const Repair_options& options, Repair_re
   result.manifold = non_manifold.empty();
   result.border_cycles_left = border_cycles(pm).size();
   result.closed = result.border_cycles_left == 0;
-  if (result.closed && result.holes.failed > 0) {
-    // A later step closed them: the self-intersection removal replaces whole regions, holes
-    // included. The report must say what the written mesh shows.
-    for (Hole_fill_report& hole : result.holes.holes) {
-      if (hole.filled || hole.failure.empty()) continue;
-      hole.notes.push_back(
-          "closed by the self-intersection removal, which replaced the region "
-          "around it (before: " +
-          hole.failure + ")");
-      hole.failure.clear();
-      hole.filled = true;
-    }
-    timer.count("failed_holes_closed_later", double(result.holes.failed));
-    result.holes.filled += result.holes.failed;
-    result.holes.failed = 0;
-  }
+  reconcile_open_holes(pm, vpm, border_points, timer, result);
   if (options.detect_self_intersections) {
     set_output_self_intersections(pm, result);
     result.self_intersections_checked = true;
@@ -1244,12 +1331,15 @@ Repair_result run_repair_pipeline(PolygonMesh& pm, VertexPointMap vpm, const Geo
   if (!result.cancelled) step_degenerate_faces(pm, vpm, result, visitor);
   if (!result.cancelled && options.keep_largest_component)
     step_largest_component(pm, result, visitor);
-  if (!result.cancelled) step_fill_holes(pm, vpm, traits, options, visitor, result);
+  if (!result.cancelled && options.remove_hole_fragments)
+    step_remove_hole_fragments(pm, vpm, options, visitor, result);
+  std::vector<typename boost::property_traits<VertexPointMap>::value_type> hole_points;
+  if (!result.cancelled) hole_points = step_fill_holes(pm, vpm, traits, options, visitor, result);
   if (!result.cancelled && options.repair_self_intersections)
     step_remove_self_intersections(pm, vpm, traits, options, visitor, result);
   if (!result.cancelled && options.merge_intersecting_solids)
     step_merge_intersecting_solids(pm, vpm, traits, visitor, result);
-  step_verify(pm, options, result, visitor);
+  step_verify(pm, vpm, hole_points, options, result, visitor);
   list_remaining(result);
   return result;
 }
