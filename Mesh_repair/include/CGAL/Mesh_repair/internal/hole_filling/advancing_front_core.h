@@ -1097,7 +1097,7 @@ class Advancing_front {
   /// far, reusing every answer, until done or `remnant_visit_budget` stored triangles were
   /// visited; the loop is then left open. With `Front_options::remnant_visits_left`, the
   /// eager stage stops when the hole's shared budget is spent.
-  static constexpr int remnant_lazy_rounds = 64;
+  static constexpr int remnant_lazy_rounds = 64, remnant_free_rounds = 8;
   bool close_remnant_with(const std::vector<std::size_t>& loop, bool shaped) {
     const std::size_t n = loop.size();
     enum : char { unknown, cheap_ok, passes, fails };
@@ -1123,6 +1123,11 @@ class Advancing_front {
       return s == passes || (s == cheap_ok && !eager);
     };
     for (int round = 0; round < remnant_lazy_rounds; ++round) {
+      // Past `remnant_free_rounds`, the rounds stop once the hole's budget is spent: a loop with
+      // no valid triangulation repeated all 64 on every attempt (15 per hole), about 2 s per
+      // failing hole on a furniture model. The free rounds keep closing the loops that settle
+      // in a few rounds after an earlier attempt spent it (a femur hole needs them).
+      if (round >= remnant_free_rounds && used() > budget) return spend(false);
       const std::vector<std::array<std::size_t, 3>> triangles =
           least_area_triangulation(loop, allowed);
       if (triangles.empty()) return spend(false);
