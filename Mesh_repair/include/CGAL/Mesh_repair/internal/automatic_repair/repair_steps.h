@@ -1194,9 +1194,6 @@ void step_merge_intersecting_solids(PolygonMesh& pm, VertexPointMap vpm, const G
   timer.count("faces_added", double(added));
 }
 
-/// Faces of all filled patches and their one-ring are not known here (regions were copied
-/// back), so the verification counts self-intersections of the whole output and compares with
-/// the input count: new pairs can only come from the repair.
 /// Holes that the filling left open (failed, too large, outlines of sheets) whose border is gone
 /// from the output: a later step replaced or removed the faces around them (the growth of a
 /// neighbouring failed hole, the self-intersection removal). The report must say what the
@@ -1234,6 +1231,9 @@ void reconcile_open_holes(const PolygonMesh& pm, VertexPointMap vpm,
   if (closed_later > 0) timer.count("open_holes_closed_later", double(closed_later));
 }
 
+/// Faces of all filled patches and their one-ring are not known here (regions were copied
+/// back), so the verification counts self-intersections of the whole output and compares with
+/// the input count: new pairs can only come from the repair.
 template <class PolygonMesh, class VertexPointMap, class Point>
 void step_verify(const PolygonMesh& pm, VertexPointMap vpm, const std::vector<Point>& border_points,
                  const Repair_options& options, Repair_result& result, Any_visitor visitor) {
