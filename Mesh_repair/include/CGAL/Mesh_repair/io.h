@@ -285,13 +285,15 @@ inline void add_soup_changes(Soup_repair_report& report, const Soup_repair_repor
 
 namespace internal {
 
-/// False when `polygon` has more than `max_unchecked_polygon_sides` sides and its projection
-/// is not simple (internal/polygon_projection.h): CGAL's triangulation would insert every
-/// crossing of two sides as a vertex (O(n^2) time and memory: about a million for a {1500/601}
-/// star) and then fail, so such a polygon goes to the fan directly.
+/// False when the projection of `polygon` (more than 3 sides) is not simple
+/// (internal/polygon_projection.h): CGAL's triangulation would insert every crossing of two
+/// sides as a vertex (O(n^2) time and memory: about a million for a {1500/601} star) and then
+/// fail, and on a small polygon whose projection degenerates (a pentagon with one coordinate
+/// of 4e91, found by fuzzing) CGAL 5.5's triangulate_faces dereferences a null face. Such a
+/// polygon goes to the fan directly.
 template <class Point, class Polygon>
 bool worth_triangulating_with_cgal(const std::vector<Point>& points, const Polygon& polygon) {
-  if (polygon.size() <= max_unchecked_polygon_sides) return true;
+  if (polygon.size() <= 3) return true;
   std::vector<Point> corners;
   corners.reserve(polygon.size());
   for (std::size_t i : polygon) corners.push_back(points[i]);
