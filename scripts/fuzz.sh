@@ -11,7 +11,7 @@ ROOT=$(cd "$(dirname "$0")/.." && pwd)
 BUILD="$ROOT/build-fuzz"
 SECONDS_EACH=${1:-60}
 [ $# -gt 0 ] && shift
-TARGETS=${*:-"fuzz_read_off fuzz_read_obj fuzz_read_stl fuzz_read_ply fuzz_check fuzz_repair"}
+TARGETS=${*:-"fuzz_read_off fuzz_read_obj fuzz_read_stl fuzz_read_ply fuzz_read_xyz fuzz_check fuzz_repair"}
 JOBS=${FUZZ_BUILD_JOBS:-1}
 SEED_OPTION=""
 [ -n "${FUZZ_SEED:-}" ] && SEED_OPTION="-seed=$FUZZ_SEED"
@@ -34,6 +34,7 @@ for target in $TARGETS; do
     fuzz_read_obj) ext=obj ;;
     fuzz_read_stl) ext=stl ;;
     fuzz_read_ply) ext=ply ;;
+    fuzz_read_xyz) ext=xyz ;;
     *) ext="" ;;
   esac
   for f in "$ROOT"/test/data/readers/* "$ROOT"/test/fuzz/corpus-regression/*; do

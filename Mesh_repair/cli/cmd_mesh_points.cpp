@@ -15,9 +15,10 @@
 namespace mesh_repair_cli {
 
 const char* const mesh_points_help =
-    "usage: mesh_repair mesh-points IN.xyz|IN.ply -o OUT [--quads] [--no-smooth] [--iterations N]\n"
+    "usage: mesh_repair mesh-points IN -o OUT [--quads] [--no-smooth] [--iterations N]\n"
     "                              [--seed S] [--threads N] [--feature-angle DEG]\n"
     "                              [--report R.json] [--quiet]\n"
+    "  IN: .xyz or .pwn (x y z [nx ny nz] per line), or the vertices of .off, .obj, .stl, .ply.\n"
     "  Triangulates unorganised points with CGAL's advancing-front reconstruction, flips edges\n"
     "  to raise quality, optionally converts to quads, and smooths with the micro-GA, nodes on\n"
     "  the G1 surface through the points (the paper's mapping).\n";
@@ -37,7 +38,7 @@ int run_mesh_points(const std::vector<std::string>& args) {
 
   std::vector<Point> points;
   const std::string error = MR::read_point_file(input, points);
-  if (!error.empty()) throw Input_error("mesh-points: " + error);
+  if (!error.empty()) throw Input_error(error);
 
   Mesh mesh;
   Progress_bar bar(progress_wanted(arguments));

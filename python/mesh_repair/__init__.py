@@ -389,8 +389,8 @@ def mesh_points(points, *, quads=False, smooth=True, iterations=3, seed=0, threa
     """Meshes a point cloud (``mesh_repair mesh-points``): CGAL's advancing-front surface
     reconstruction, quality edge flips, optional conversion to quads (``quads``), then
     ``iterations`` micro-GA sweeps on the G1 surface through the points (``smooth=False``: none).
-    ``points``: a float array of shape (n, 3), n >= 3, or the path of a point file (XYZ, PLY,
-    OFF: its vertices). ``threads`` 0 = all cores. Returns a ``Result``; the report holds
+    ``points``: a float array of shape (n, 3), n >= 3, or the path of a point file (XYZ or
+    PWN, or the vertices of OFF, OBJ, STL, PLY). ``threads`` 0 = all cores. Returns a ``Result``; the report holds
     ``points``, ``edge_flips``, ``quads`` and the quality before and after the smoothing."""
     options = {
         "quads": bool(quads),

@@ -109,8 +109,12 @@ def test_mesh_points_rejects_bad_points(tmp_path):
     assert "fewer than three points" in message(lambda: mesh_repair.mesh_points(np.zeros((0, 3))))
     assert "cannot be read as an array" in message(lambda: mesh_repair.mesh_points([[1, 2], [3]]))
     missing = tmp_path / "missing.xyz"
-    assert message(lambda: mesh_repair.mesh_points(missing)) == \
-        f"cannot read at least three points from {missing}"
+    assert message(lambda: mesh_repair.mesh_points(missing)) == f"{missing}: no such file"
+    # A point file is read by the strict readers: its line and the reason.
+    letters = tmp_path / "letters.xyz"
+    letters.write_text("0 0 0\n1 0 0\n0 one 0\n")
+    assert message(lambda: mesh_repair.mesh_points(letters)) == \
+        f"{letters}: line 3: expected a number, found 'one'"
     # Points that span no surface: a one-line reason, not a crash.
     for flat in (np.zeros((10, 3)), np.c_[np.arange(10.0), np.zeros(10), np.zeros(10)]):
         assert "no triangle" in message(lambda: mesh_repair.mesh_points(flat))

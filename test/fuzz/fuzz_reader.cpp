@@ -1,7 +1,7 @@
-// libFuzzer target of one strict reader (MESH_REPAIR_FUZZ_FORMAT: "OFF", "OBJ", "STL" or
-// "PLY"): any bytes must give a soup or one error line, never a crash, a hang or a runaway
-// allocation. Built by test/fuzz/CMakeLists.txt (option MESH_REPAIR_FUZZ), run by
-// scripts/fuzz.sh.
+// libFuzzer target of one strict reader (MESH_REPAIR_FUZZ_FORMAT: "OFF", "OBJ", "STL", "PLY"
+// or "XYZ", the point files of mesh-points): any bytes must give a soup or one error line, never a
+// crash, a hang or a runaway allocation. Built by test/fuzz/CMakeLists.txt (option
+// MESH_REPAIR_FUZZ), run by scripts/fuzz.sh.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Mesh_repair/internal/readers/read_soup.h>
 #include <CGAL/Mesh_repair/internal/soup_validation.h>

@@ -45,6 +45,7 @@
 #include <exception>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <set>
 #include <string>
 #include <unordered_map>
@@ -82,6 +83,32 @@ std::string read_polygon_soup_from_memory(const char* data, std::size_t size,
   return error;
 }
 
+namespace internal {
+
+/// Opens `filename` and hands its bytes to `read` (a callable taking a `readers::Byte_reader&`
+/// and returning an empty string or one line), after refusing a file that is mostly unwritten
+/// (`readers::min_unwritten_bytes`). The file is closed on every path.
+template <class Read>
+std::string read_file_bytes(const std::string& filename, Read&& read) {
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(filename.c_str(), "rb"),
+                                                       &std::fclose);
+  if (!file) return filename + ": cannot be opened for reading";
+  struct stat info;
+  if (::fstat(::fileno(file.get()), &info) != 0 || !S_ISREG(info.st_mode))
+    return filename + ": not a regular file";
+  const std::uintmax_t size = std::uintmax_t(info.st_size);
+  std::uintmax_t first_hole = 0;
+  const std::uintmax_t unwritten = readers::unwritten_bytes(::fileno(file.get()), size, first_hole);
+  if (unwritten >= readers::min_unwritten_bytes && unwritten > size / 2)
+    return filename + ": byte " + std::to_string(first_hole) + ": a sparse file, " +
+           std::to_string(unwritten) + " of its " + std::to_string(size) +
+           " bytes were never written (a preallocated or truncated file, not mesh data)";
+  readers::Byte_reader in(file.get(), size);
+  return read(in);
+}
+
+}  // namespace internal
+
 /// Reads `filename` (OFF, OBJ, STL or PLY, by extension) into a polygon soup and validates it.
 /// Returns an empty string on success, else one line saying what is wrong with the file and
 /// where. Never throws; never modifies the file.
@@ -92,18 +119,11 @@ std::string read_polygon_soup(const std::string& filename, Polygon_soup<Point>& 
   soup.short_polygons_skipped = 0;
   std::string error = internal::precheck_mesh_file(filename);
   if (!error.empty()) return error;
-  std::FILE* file = std::fopen(filename.c_str(), "rb");
-  if (!file) return filename + ": cannot be opened for reading";
-  struct stat info;
-  if (::fstat(::fileno(file), &info) != 0 || !S_ISREG(info.st_mode)) {
-    std::fclose(file);
-    return filename + ": not a regular file";
-  }
-  internal::readers::Byte_reader in(file, std::uintmax_t(info.st_size));
   internal::readers::Read_counts counts;
-  error = internal::readers::read_soup(in, internal::format_name(filename), filename, soup.points,
-                                       soup.polygons, counts);
-  std::fclose(file);
+  error = internal::read_file_bytes(filename, [&](internal::readers::Byte_reader& in) {
+    return internal::readers::read_soup(in, internal::format_name(filename), filename, soup.points,
+                                        soup.polygons, counts);
+  });
   soup.short_polygons_skipped = counts.short_polygons;
   if (error.empty()) error = internal::validate_soup(filename, soup.points, soup.polygons);
   if (!error.empty()) soup.points.clear(), soup.polygons.clear();  // nothing half-read

@@ -9,6 +9,7 @@
 /// then MGA smoothing on the G1 surface through the points. See doc/mga_smooth.md.
 
 #include <CGAL/Mesh_repair/internal/soup_validation.h>
+#include <CGAL/Mesh_repair/io.h>
 #include <CGAL/Mesh_repair/json_writer.h>
 #include <CGAL/Mesh_repair/mga_smooth.h>
 #include <CGAL/Mesh_repair/parameters.h>
@@ -16,7 +17,6 @@
 #include <CGAL/Mesh_repair/visitor.h>
 
 #include <CGAL/Advancing_front_surface_reconstruction.h>
-#include <CGAL/IO/read_points.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
@@ -149,15 +149,33 @@ Mesh_points_result mesh_points(const PointRange& points, PolygonMesh& pm,
                                             options, visitor.get());
 }
 
-/// Reads the points of a point file (`CGAL::IO::read_points`: XYZ, OFF, PLY, LAS) into `points`
-/// and checks them as a mesh's vertices are checked (finite, at most 1e100); the one-line reason
-/// when that fails or fewer than three points were read, else an empty string.
+/// Reads the points of a point file into `points` with the project's strict readers: XYZ
+/// (`.xyz`, `.pwn`: a point per line, optionally with its normal) or the vertices of an OFF,
+/// OBJ, STL or PLY file (faces, when there are any, are read and left out). The points are
+/// checked as a mesh's vertices are (finite, at most 1e100) and there must be at least three.
+/// Returns an empty string on success, else one line naming the file, the place and the
+/// reason. Never throws; never modifies the file.
 template <class Point>
-std::string read_point_file(const std::string& path, std::vector<Point>& points) {
+std::string read_point_file(const std::string& filename, std::vector<Point>& points) {
   points.clear();
-  if (!CGAL::IO::read_points(path, std::back_inserter(points)) || points.size() < 3)
-    return "cannot read at least three points from " + path;
-  return internal::validate_points(path, points);
+  std::string error = internal::precheck_file(filename);
+  if (!error.empty()) return error;
+  const std::string extension = internal::lower_extension(filename);
+  const std::string format = internal::format_name(filename);
+  if (format.empty() && extension != "xyz" && extension != "pwn")
+    return filename + ": unknown point file format '" + extension +
+           "' (expected .xyz, .pwn, .off, .obj, .stl or .ply)";
+  std::vector<std::vector<std::size_t>> polygons;  // read and left out
+  internal::readers::Read_counts counts;
+  error = internal::read_file_bytes(filename, [&](internal::readers::Byte_reader& in) {
+    return internal::readers::read_soup(in, format.empty() ? "XYZ" : format, filename, points,
+                                        polygons, counts);
+  });
+  if (error.empty() && points.size() < 3)
+    error = filename + ": " + std::to_string(points.size()) + " point(s), at least 3 are needed";
+  if (error.empty()) error = internal::validate_points(filename, points);
+  if (!error.empty()) std::vector<Point>().swap(points);
+  return error;
 }
 
 /// Writes the report of `mesh_repair mesh-points --report` (doc/mga_smooth.md): `input`, `output`
@@ -203,8 +221,7 @@ extern
                                                               const Mesh_points_options&,
                                                               Any_visitor);
 }  // namespace internal
-// CGAL's point readers (XYZ, OFF, PLY, LAS), for the tool's mesh-points command and the Python
-// module.
+// The point file reader, for the tool's mesh-points command and the Python module.
 #ifndef CGAL_MESH_REPAIR_INSTANTIATE_MESH_POINTS
 extern
 #endif

@@ -50,20 +50,27 @@ inline std::string format_name(const std::string& filename) {
   return {};
 }
 
-/// Checks that `filename` is a readable, non-empty regular file of a known format whose header
-/// Returns an empty string when it may be handed to a reader.
-inline std::string precheck_mesh_file(const std::string& filename) {
+/// Checks that `filename` is a readable, non-empty regular file. Returns an empty string when it
+/// may be opened, else the one-line reason.
+inline std::string precheck_file(const std::string& filename) {
   struct stat info;
   if (::stat(filename.c_str(), &info) != 0) return filename + ": no such file";
   if (S_ISDIR(info.st_mode)) return filename + ": is a directory, not a mesh file";
   if (!S_ISREG(info.st_mode)) return filename + ": not a regular file";
-  const std::string format = format_name(filename);
-  if (format.empty())
-    return filename + ": unknown format '" + lower_extension(filename) +
-           "' (expected .off, .obj, .stl or .ply)";
   if (::access(filename.c_str(), R_OK) != 0) return filename + ": cannot be opened for reading";
   if (info.st_size == 0) return filename + ": empty file";
   return {};
+}
+
+/// `precheck_file`, and a known mesh format (by extension). Returns an empty string when the
+/// file may be handed to a reader.
+inline std::string precheck_mesh_file(const std::string& filename) {
+  struct stat info;
+  if (::stat(filename.c_str(), &info) == 0 && S_ISREG(info.st_mode) &&
+      format_name(filename).empty())
+    return filename + ": unknown format '" + lower_extension(filename) +
+           "' (expected .off, .obj, .stl or .ply)";
+  return precheck_file(filename);
 }
 
 /// The largest coordinate magnitude read: cubes of coordinate differences (volumes, the

@@ -18,6 +18,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 namespace CGAL {
 namespace Mesh_repair {
 namespace internal {
@@ -31,6 +33,38 @@ constexpr std::size_t max_polygon_vertices = 10000;
 
 /// Longest text line accepted (a face of `max_polygon_vertices` indices takes under 200 KB).
 constexpr std::size_t max_line_bytes = std::size_t(64) << 20;
+
+/// A file whose never-written regions (holes of the file system, read back as zeros) are more
+/// than half of it, and at least 1 MB, is refused before it is read: a preallocated, truncated or
+/// sparse file is no mesh, and its zeros would be read as millions of vertices at the origin.
+/// The zero-chunk rule of `Byte_reader` catches a whole megabyte of zeros; a file with one
+/// written byte every half megabyte passed it and took 2.4 GB and 15 s to refuse.
+constexpr std::uintmax_t min_unwritten_bytes = std::uintmax_t(1) << 20;
+
+/// The bytes of the open file `fd` (of `size` bytes) that lie in holes of the file system, and
+/// the offset of the first hole (`size` when none). 0 where the system cannot tell (no
+/// `SEEK_HOLE`): the file is then read as before. Leaves the file offset at 0.
+inline std::uintmax_t unwritten_bytes(int fd, std::uintmax_t size, std::uintmax_t& first_hole) {
+  std::uintmax_t holes = 0;
+  first_hole = size;
+#if defined(SEEK_HOLE) && defined(SEEK_DATA)
+  // One step per written region; each step moves forwards by at least one block.
+  for (off_t at = 0; std::uintmax_t(at) < size;) {
+    const off_t hole = ::lseek(fd, at, SEEK_HOLE);
+    if (hole < 0 || std::uintmax_t(hole) >= size) break;
+    off_t data = ::lseek(fd, hole, SEEK_DATA);
+    if (data < 0 || std::uintmax_t(data) > size) data = off_t(size);  // a hole to the end
+    if (data <= hole) break;
+    holes += std::uintmax_t(data - hole);
+    first_hole = std::min(first_hole, std::uintmax_t(hole));
+    at = data;
+  }
+  ::lseek(fd, 0, SEEK_SET);
+#else
+  (void)fd;
+#endif
+  return holes;
+}
 
 /// A malformed file: the reason, and where (a line for text formats, else a byte offset).
 struct Parse_error {

@@ -17,6 +17,7 @@
 #include <CGAL/Mesh_repair/internal/readers/off_reader.h>
 #include <CGAL/Mesh_repair/internal/readers/ply_reader.h>
 #include <CGAL/Mesh_repair/internal/readers/stl_reader.h>
+#include <CGAL/Mesh_repair/internal/readers/xyz_reader.h>
 
 #include <new>
 #include <stdexcept>
@@ -28,8 +29,9 @@ namespace Mesh_repair {
 namespace internal {
 namespace readers {
 
-/// Reads `in` as `format` ("OFF", "OBJ", "STL" or "PLY") into a soup. Returns an empty string,
-/// or one line "NAME: line L: reason" / "NAME: byte B: reason"; the soup is then empty.
+/// Reads `in` as `format` ("OFF", "OBJ", "STL", "PLY", or "XYZ": points only) into a soup. Returns
+/// an empty string, or one line "NAME: line L: reason" / "NAME: byte B: reason"; the soup is then
+/// empty.
 template <class Point>
 std::string read_soup(Byte_reader& in, const std::string& format, const std::string& name,
                       std::vector<Point>& points, std::vector<std::vector<std::size_t>>& polygons,
@@ -47,6 +49,8 @@ std::string read_soup(Byte_reader& in, const std::string& format, const std::str
       read_stl(in, points, polygons, counts);
     else if (format == "PLY")
       read_ply(in, points, polygons, counts);
+    else if (format == "XYZ")
+      read_xyz(in, points);  // points only
     else
       error = name + ": unknown format '" + format + "'";
   } catch (const Parse_error& e) {
