@@ -116,7 +116,7 @@ TEST(CliRobustness, MalformedPointFilesExitTwoWithOneLine) {
        "ply\nformat ascii 1.0\nelement vertex 3\nproperty list uchar float x\nproperty float y\n"
        "property float z\nend_header\n1 2 3 4\n1 2 3 4\n1 2 3 4\n"},
       {"letters.xyz", "0 0 0\n1 0 0\n0 one 0\n"},
-      {"four_numbers.xyz", "0 0 0\n1 0 0 1\n0 1 0\n"},
+      {"two_numbers.xyz", "0 0 0\n1 0\n0 1 0\n"},
       {"two_points.xyz", "0 0 0\n1 0 0\n"},
       {"nan.xyz", "0 0 0\n1 0 0\n0 nan 0\n"},
       {"points.las", "LASF"},
@@ -131,8 +131,9 @@ TEST(CliRobustness, MalformedPointFilesExitTwoWithOneLine) {
     EXPECT_NE(run.stderr_text.find(c.first), std::string::npos) << run.stderr_text;
     EXPECT_FALSE(fs::exists(scratch("points_out.off"))) << c.first;
   }
-  // Points with and without normals, comments, blank lines, tabs and CRLF: read and meshed.
-  const Cli_run run = run_cli("mesh-points " + (readers_dir / "points_normals.xyz").string() +
+  // Points with and without normals and other columns, comments, blank lines, tabs and CRLF:
+  // read and meshed.
+  const Cli_run run = run_cli("mesh-points " + (readers_dir / "points_columns.xyz").string() +
                               " -o " + scratch("points_out.off").string());
   EXPECT_NE(run.status, 2) << run.stderr_text;
   EXPECT_TRUE(fs::exists(scratch("points_out.off")));

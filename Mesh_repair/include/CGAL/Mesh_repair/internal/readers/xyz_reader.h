@@ -4,8 +4,9 @@
 #define CGAL_MESH_REPAIR_INTERNAL_READERS_XYZ_READER_H
 
 // XYZ point files (CGAL's .xyz and .pwn): one point per line, its three coordinates and
-// optionally a normal (three more numbers, read and left out); blank lines and lines starting
-// with '#' are skipped. Strict like the mesh readers: any other line is an error with its number.
+// whatever numbers follow (a normal, a colour, an intensity: read and left out); blank lines
+// and lines starting with '#' are skipped. Strict like the mesh readers: a line with fewer than
+// three numbers, or a word that is not a number, is an error with its line number.
 
 #include <CGAL/Mesh_repair/internal/readers/byte_reader.h>
 
@@ -24,18 +25,17 @@ void read_xyz(Byte_reader& in, std::vector<Point>& points) {
   while (in.read_line(line)) {
     Tokens words(line);
     if (words.at_end() || words.rest().front() == '#') continue;
-    double values[6];
-    int count = 0;
-    for (std::string_view word = words.next(); !word.empty(); word = words.next()) {
-      if (count == 6) fail_at_line(in.line(), "more than 6 numbers (a point and its normal)");
-      if (!parse_double(word, values[count]))
+    double xyz[3];
+    std::size_t count = 0;
+    for (std::string_view word = words.next(); !word.empty(); word = words.next(), ++count) {
+      double value;
+      if (!parse_double(word, value))
         fail_at_line(in.line(), "expected a number, found " + quoted(word));
-      ++count;
+      if (count < 3) xyz[count] = value;
     }
-    if (count != 3 && count != 6)
-      fail_at_line(in.line(), "expected 3 numbers (a point) or 6 (a point and its normal), found " +
-                                  std::to_string(count));
-    points.emplace_back(values[0], values[1], values[2]);
+    if (count < 3)
+      fail_at_line(in.line(), "a point needs 3 coordinates, found " + std::to_string(count));
+    points.emplace_back(xyz[0], xyz[1], xyz[2]);
   }
 }
 
