@@ -18,7 +18,8 @@ const char* const mesh_points_help =
     "usage: mesh_repair mesh-points IN -o OUT [--quads] [--no-smooth] [--iterations N]\n"
     "                              [--seed S] [--threads N] [--feature-angle DEG]\n"
     "                              [--report R.json] [--quiet]\n"
-    "  IN: .xyz or .pwn (x y z [more numbers] per line), or the vertices of .off, .obj, .stl, .ply.\n"
+    "  IN: .xyz or .pwn (x y z [more numbers] per line), or the vertices of .off, .obj, .stl, "
+    ".ply.\n"
     "  Triangulates unorganised points with CGAL's advancing-front reconstruction, flips edges\n"
     "  to raise quality, optionally converts to quads, and smooths with the micro-GA, nodes on\n"
     "  the G1 surface through the points (the paper's mapping).\n";
