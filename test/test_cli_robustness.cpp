@@ -139,6 +139,41 @@ TEST(CliRobustness, MalformedPointFilesExitTwoWithOneLine) {
   EXPECT_TRUE(fs::exists(scratch("points_out.off")));
 }
 
+// The files that options name (--faces of suppress, --constraints of fill) follow the mesh
+// readers' rules: a sparse 2 GB file was read to its end (it hung), a bad word gave no file nor
+// line.
+TEST(CliRobustness, OptionFilesAreCheckedLikeMeshFiles) {
+  const std::string mesh = (readers_dir / "comments.off").string();
+  const fs::path out = scratch("option_out.off");
+  const fs::path sparse = scratch("sparse.txt");
+  write_bytes(sparse, "");
+  fs::resize_file(sparse, std::uintmax_t(2) << 30);
+  struct Case {
+    std::string name, content, option, expected;
+  };
+  for (const Case& c : std::vector<Case>{
+           {"letters.txt", "0 1\n2 x\n", "suppress --faces", "line 2: expected a face index"},
+           {"range.txt", "0\n\n99999999999999999999999\n", "suppress --faces", "line 3:"},
+           {"nul.txt", std::string("0 1\n2\0 3\n", 9), "suppress --faces", "line 2:"},
+           {"sparse.txt", "", "suppress --faces", "a sparse file"},
+           {"bad_constraint.txt", "# c\npoint 0 0\n", "fill --constraints", "line 2:"},
+           {"sparse.txt", "", "fill --constraints", "a sparse file"}}) {
+    const fs::path file = scratch(c.name);
+    if (c.name != "sparse.txt") write_bytes(file, c.content);
+    const std::string command = c.option.substr(0, c.option.find(' '));
+    const std::string option = c.option.substr(c.option.find(' ') + 1);
+    const Cli_run run =
+        run_cli(command + " " + mesh + " -o " + out.string() + " " + option + " " + file.string());
+    EXPECT_EQ(run.status, 2) << c.name << ": " << run.stderr_text;
+    EXPECT_EQ(count_lines(run.stderr_text), 1u) << run.stderr_text;
+    EXPECT_NE(run.stderr_text.find(file.string() + ": "), std::string::npos) << run.stderr_text;
+    EXPECT_NE(run.stderr_text.find(c.expected), std::string::npos) << run.stderr_text;
+    EXPECT_LT(run.seconds, 10.0) << c.name;
+    EXPECT_FALSE(fs::exists(out)) << c.name;
+  }
+  fs::remove(sparse);
+}
+
 TEST(CliRobustness, DirectoryAndMissingFileExitTwo) {
   EXPECT_EQ(run_cli("check " + fs::temp_directory_path().string()).status, 2);
   EXPECT_EQ(run_cli("check /nonexistent/mesh.off").status, 2);

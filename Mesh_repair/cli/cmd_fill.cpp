@@ -152,8 +152,10 @@ Curvature_options parse_curvature_options(const Arguments& arguments) {
   parse("--grid", options.grid, MR::topological_grid_from_string);
   parse("--force-density", options.density, MR::force_density_from_string);
   if (arguments.has("--constraints")) {
-    std::ifstream in(arguments.get("--constraints"));
-    if (!in) throw Input_error("cannot read --constraints " + arguments.get("--constraints"));
+    std::ostringstream text;
+    for (const std::string& line : read_option_file(arguments.get("--constraints")))
+      text << line << '\n';
+    std::istringstream in(text.str());
     const std::string error = MR::read_fill_constraints(in, options.constraints);
     if (!error.empty()) throw Input_error(arguments.get("--constraints") + ": " + error);
   }

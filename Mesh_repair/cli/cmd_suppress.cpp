@@ -11,6 +11,7 @@
 #include <CGAL/Mesh_repair/io.h>
 #include <CGAL/Mesh_repair/implant_patch.h>
 
+#include <charconv>
 #include <fstream>
 #include <functional>
 #include <iostream>
@@ -61,14 +62,21 @@ std::vector<Mesh::Face_index> selected_faces(const Arguments& arguments, const M
   if (selectors != 1) throw Input_error("give exactly one of --faces, --sphere, --box");
   std::vector<Mesh::Face_index> faces;
   if (arguments.has("--faces")) {
-    std::ifstream in(arguments.get("--faces"));
-    if (!in) throw Input_error("cannot read " + arguments.get("--faces"));
-    std::string token;
-    while (in >> token) {
-      const long long index = parse_int(token, "--faces");
-      if (index < 0 || index >= (long long)mesh.number_of_faces())
-        throw Input_error("--faces: index " + token + " out of range");
-      faces.push_back(Mesh::Face_index(Mesh::size_type(index)));
+    const std::string path = arguments.get("--faces");
+    const std::vector<std::string> lines = read_option_file(path);
+    for (std::size_t number = 0; number < lines.size(); ++number) {
+      std::istringstream words(lines[number]);
+      for (std::string word; words >> word;) {
+        const std::string where = path + ": line " + std::to_string(number + 1) + ": ";
+        std::size_t index = 0;
+        const auto parsed = std::from_chars(word.data(), word.data() + word.size(), index);
+        if (parsed.ec != std::errc() || parsed.ptr != word.data() + word.size())
+          throw Input_error(where + "expected a face index, found '" + word.substr(0, 40) + "'");
+        if (index >= mesh.number_of_faces())
+          throw Input_error(where + "face index " + word + " out of range (the mesh has " +
+                            std::to_string(mesh.number_of_faces()) + " faces)");
+        faces.push_back(Mesh::Face_index(Mesh::size_type(index)));
+      }
     }
     return faces;
   }

@@ -168,6 +168,26 @@ void load_mesh(const std::string& path, Mesh& mesh, CGAL::Mesh_repair::Soup_repa
   if (!error.empty()) throw Input_error(error);
 }
 
+std::vector<std::string> read_option_file(const std::string& path) {
+  namespace MI = CGAL::Mesh_repair::internal;
+  files_read().push_back(path);
+  std::string error = MI::precheck_file(path);
+  if (!error.empty()) throw Input_error(error);
+  std::vector<std::string> lines;
+  error = MI::read_file_bytes(path, [&](MI::readers::Byte_reader& in) {
+    try {
+      for (std::string line; in.read_line(line);) lines.push_back(line);
+    } catch (const MI::readers::Parse_error& e) {
+      return path + ": line " + std::to_string(e.line) + ": " + e.reason;
+    } catch (const std::bad_alloc&) {
+      return path + ": out of memory while reading";
+    }
+    return std::string();
+  });
+  if (!error.empty()) throw Input_error(error);
+  return lines;
+}
+
 void save_mesh(const std::string& path, const Mesh& mesh, bool binary) {
   refuse_to_overwrite_input(path);
   const std::string error = CGAL::Mesh_repair::write_mesh(path, mesh, binary);

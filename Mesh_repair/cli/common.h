@@ -86,6 +86,12 @@ long long parse_int(const std::string& text, const std::string& option);
 void load_mesh(const std::string& path, Mesh& mesh, CGAL::Mesh_repair::Soup_repair_report& report,
                bool remove_zero_volume_walls = false);
 
+/// The text of a file an option names (`--faces`, `--constraints`), read with the mesh readers'
+/// rules: a regular, readable file, not sparse, no NUL or other control byte, lines of at most
+/// 64 MB; one line per element of the result, line ends removed. Throws Input_error
+/// "FILE: line N: reason". The file counts as an input (no output may overwrite it).
+std::vector<std::string> read_option_file(const std::string& path);
+
 /// Writes `mesh` atomically; throws Input_error on failure. `binary` for STL/PLY.
 void save_mesh(const std::string& path, const Mesh& mesh, bool binary = false);
 
