@@ -30,6 +30,7 @@
 #include <CGAL/Mesh_repair/soup_repair_report.h>
 #include <CGAL/Mesh_repair/internal/polygon_projection.h>
 #include <CGAL/Mesh_repair/internal/soup_validation.h>
+#include <CGAL/Mesh_repair/internal/soup_to_mesh.h>
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/boost/graph/Euler_operations.h>
@@ -387,7 +388,7 @@ std::string triangulate_soup_to_mesh(const Polygon_soup<Point>& soup, PolygonMes
   if (triangles.polygons.empty()) return "no face is left after triangulating the polygons";
   if (!PMP::is_polygon_soup_a_polygon_mesh(triangles.polygons))
     return "the triangulated polygon soup is not a valid polygon mesh even after repair";
-  PMP::polygon_soup_to_polygon_mesh(triangles.points, triangles.polygons, pm);
+  internal::polygon_mesh_soup_to_mesh(triangles.points, triangles.polygons, pm);
   return {};
 }
 
@@ -399,7 +400,7 @@ std::string soup_to_mesh(const Polygon_soup<Point>& soup, PolygonMesh& pm, bool 
   namespace PMP = CGAL::Polygon_mesh_processing;
   if (!PMP::is_polygon_soup_a_polygon_mesh(soup.polygons))
     return "the polygon soup is not a valid polygon mesh even after repair";
-  PMP::polygon_soup_to_polygon_mesh(soup.points, soup.polygons, pm);
+  internal::polygon_mesh_soup_to_mesh(soup.points, soup.polygons, pm);
   if (triangulate) {
     std::size_t non_triangles = 0;
     bool large_crossing_polygon = false;
