@@ -104,12 +104,6 @@ Front_projection hole_projection(const PolygonMesh& pm, VertexPointMap vpm,
 /// doc/advancing_front.md, "Patch density".
 constexpr double front_spacing_factor = 1.15;
 
-/// The stored triangles that the remnant closings of one hole may visit in all its attempts
-/// (`Front_options::remnant_visits_left`): one loop's budget, so that a hole that another part of
-/// the mesh passes through does not spend it in each of its 15 attempts (doc/advancing_front.md,
-/// "Closing a stuck front").
-constexpr std::size_t remnant_visits_per_hole = internal::remnant_visit_budget;
-
 /// True when the triangle (a, b, c) has an angle below `limit_deg` (< 90), or a repeated point:
 /// `smallest_angle_deg(a, b, c) < limit_deg` without its three arctangents.
 inline bool has_angle_below(const Vec3& a, const Vec3& b, const Vec3& c, double limit_deg) {
@@ -236,8 +230,9 @@ Hole_fill_report fill_hole_advancing_front(
   Cache own_cache(pm, vpm);
   if (check && shared_cache == nullptr) own_cache.build();
   Cache& face_cache = shared_cache != nullptr ? *shared_cache : own_cache;
-  // One budget for the remnant closings of every attempt below (Front_options).
-  std::size_t remnant_visits_left = remnant_visits_per_hole;
+  // One budget for the remnant closings of every attempt below (Front_options): a hole that
+  // another part of the mesh passes through does not spend it in each of its 15 attempts.
+  std::size_t remnant_visits_left = front_options.remnant_visits_per_hole;
   enum class Outcome { kept, degenerate, failed };
   std::string first_failure;
   std::size_t remnant_edges = 0;
