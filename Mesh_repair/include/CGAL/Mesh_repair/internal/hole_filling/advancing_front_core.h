@@ -1122,6 +1122,7 @@ class Advancing_front {
       if (s == cheap_ok && eager && used() <= budget) s = exact_test(i, k, j) ? passes : fails;
       return s == passes || (s == cheap_ok && !eager);
     };
+    Least_area_table table;  // kept from round to round: each round only excludes triangles
     for (int round = 0; round < remnant_lazy_rounds; ++round) {
       // Past `remnant_free_rounds`, the rounds stop once the hole's budget is spent: a loop with
       // no valid triangulation repeated all 64 on every attempt (15 per hole), about 2 s per
@@ -1129,7 +1130,7 @@ class Advancing_front {
       // in a few rounds after an earlier attempt spent it (a femur hole needs them).
       if (round >= remnant_free_rounds && used() > budget) return spend(false);
       const std::vector<std::array<std::size_t, 3>> triangles =
-          least_area_triangulation(loop, allowed);
+          least_area_triangulation(loop, allowed, &table);
       if (triangles.empty()) return spend(false);
       bool all_pass = true;
       for (const auto& t : triangles) {
@@ -1172,20 +1173,49 @@ class Advancing_front {
     return true;
   }
 
+  /// The dynamic program's table of `least_area_triangulation`: for each span (i, j) of the loop,
+  /// the least area of a triangulation of the polygon i..j and the apex of its triangle on (i, j).
+  struct Least_area_table {
+    std::vector<double> weight;
+    std::vector<int> apex;
+  };
+
   /// The triangulation of the polygon `loop` of least total area whose triangles (i, k, j), as
   /// positions in the loop with i < k < j, satisfy `allowed` (empty when there is none). The
-  /// triangles come in an order where each is attached to the border of its time.
+  /// triangles come in an order where each is attached to the border of its time. With a
+  /// `table` filled by an earlier call on the same loop, whose `allowed` admitted every triangle
+  /// this one admits (the lazy rounds only exclude), only the spans whose optimum lost a
+  /// triangle are computed again: the others keep their optimum, whose alternatives can only
+  /// have grown, and the result is the one a fresh program would give (ties to the first apex).
   template <class Allowed>
   std::vector<std::array<std::size_t, 3>> least_area_triangulation(
-      const std::vector<std::size_t>& loop, const Allowed& allowed) const {
+      const std::vector<std::size_t>& loop, const Allowed& allowed,
+      Least_area_table* table = nullptr) const {
     const std::size_t n = loop.size();
     const double infinite = std::numeric_limits<double>::infinity();
-    std::vector<double> weight(n * n, infinite);
-    std::vector<int> apex(n * n, -1);
-    for (std::size_t i = 0; i + 1 < n; ++i) weight[i * n + i + 1] = 0;
+    Least_area_table local;
+    Least_area_table& t = table != nullptr ? *table : local;
+    const bool fresh = t.weight.size() != n * n;
+    if (fresh) {
+      t.weight.assign(n * n, infinite);
+      t.apex.assign(n * n, -1);
+      for (std::size_t i = 0; i + 1 < n; ++i) t.weight[i * n + i + 1] = 0;
+    }
+    std::vector<double>& weight = t.weight;
+    std::vector<int>& apex = t.apex;
+    std::vector<char> changed(fresh ? 0 : n * n, 0);  // spans whose least area grew
     for (std::size_t gap = 2; gap < n; ++gap) {
       for (std::size_t i = 0; i + gap < n; ++i) {
         const std::size_t j = i + gap;
+        double before = infinite;
+        if (!fresh) {
+          const int k = apex[i * n + j];
+          if (k < 0) continue;  // no triangulation before, none with fewer triangles allowed
+          if (allowed(i, std::size_t(k), j) && !changed[i * n + k] && !changed[k * n + j]) continue;
+          before = weight[i * n + j];
+          weight[i * n + j] = infinite;
+          apex[i * n + j] = -1;
+        }
         for (std::size_t k = i + 1; k < j; ++k) {
           const double w = weight[i * n + k] + weight[k * n + j];
           if (!(w < weight[i * n + j]) || !allowed(i, k, j)) continue;
@@ -1197,6 +1227,7 @@ class Advancing_front {
             apex[i * n + j] = int(k);
           }
         }
+        if (!fresh && weight[i * n + j] != before) changed[i * n + j] = 1;
       }
     }
     std::vector<std::array<std::size_t, 3>> triangles;
