@@ -87,6 +87,11 @@ inline Vec3 cross(const Vec3& a, const Vec3& b) {
 inline double norm(const Vec3& a) {
   return std::sqrt(dot(a, a));
 }
+/// No coordinate infinite or not a number: the only points an exact predicate may be given
+/// (Epick's exact fallback converts them to GMP rationals, and GMP raises SIGFPE on a NaN).
+inline bool is_finite(const Vec3& a) {
+  return std::isfinite(a[0]) && std::isfinite(a[1]) && std::isfinite(a[2]);
+}
 /// `a` scaled by the reciprocal of its norm; a vector of zero (or not a number) norm maps to
 /// the zero vector.
 inline Vec3 normalized(const Vec3& a) {

@@ -954,6 +954,16 @@ class Advancing_front {
     return best;
   }
 
+  /// Projects the position `p` of a new node (normal `n`); false, and no projection, when `p`,
+  /// `n` or the projection is not finite: the directions of rules b and c are 0/0 at corners of
+  /// denormal coordinates, and neither the guide surface's tree nor the exact tests may see a
+  /// NaN (`is_finite`; a fuzzed STL of four such triangles stopped the tool with SIGFPE).
+  bool placed(Vec3& p, const Vec3& n) const {
+    if (!is_finite(p) || !is_finite(n)) return false;
+    p = project_(p, n);
+    return is_finite(p);
+  }
+
   /// Rule b: one new node from the two equilateral apexes on edges A and B in the planes of
   /// normals n1 and n2 (thesis Figure 4.11), averaged; merged with a front node closer than half
   /// an edge length.
@@ -966,7 +976,7 @@ class Advancing_front {
     Vec3 p = scale(add(apex_a, apex_b), 0.5);
     if (norm(sub(p, points_[v])) < 0.5 * length)
       p = add(points_[v], scale(rotated(v, b, n, 0.5 * theta), length));
-    p = project_(p, n);
+    if (!placed(p, n)) return false;
     const long q = nearest_front_point(p, v, options_.merge_factor * length);
     if (q != none && (std::size_t(q) == a || std::size_t(q) == b)) return false;  // ear instead
     if (q != none && merge_fan(in, std::size_t(q))) return true;
@@ -981,8 +991,7 @@ class Advancing_front {
     const std::size_t a = front_[in].from, v = front_[in].to, b = front_[out].to;
     Vec3 pb = add(points_[v], scale(rotated(v, b, n2, theta / 3), length));
     Vec3 pa = add(points_[v], scale(rotated(v, a, n1, -theta / 3), length));
-    pb = project_(pb, n2);
-    pa = project_(pa, n1);
+    if (!placed(pb, n2) || !placed(pa, n1)) return false;
     const double merge = options_.merge_factor * length;
     if (nearest_front_point(pa, v, merge) != none || nearest_front_point(pb, v, merge) != none)
       return false;
@@ -1313,7 +1322,8 @@ class Advancing_front {
         const Vec3 n = normal(p);
         Vec3 move = sub(centroid, points_[p]);
         move = sub(move, scale(n, dot(move, n)));
-        points_[p] = project_(add(points_[p], move), n);
+        Vec3 moved = add(points_[p], move);
+        if (placed(moved, n)) points_[p] = moved;
       }
     }
   }

@@ -37,6 +37,12 @@ class Guide_surface {
   CGAL_MESH_REPAIR_CORE_INLINE Vec3 project(const Vec3& p) const;
 
  private:
+  /// Closest points on a triangle divide by its squared edge lengths and area: where one of
+  /// them underflows to zero while the vector is not zero (edges of 1e-216 beside edges of 1, a
+  /// fuzzed STL), the tree's constructions give NaN, which its exact comparisons cannot take
+  /// (GMP raises SIGFPE). Such a triangulation is no guide.
+  CGAL_MESH_REPAIR_CORE_INLINE bool squares_are_representable() const;
+
   std::vector<Triangle> triangles_;
   Tree tree_;
 };

@@ -9,6 +9,7 @@
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 #include <CGAL/utility.h>
 
+#include <cfloat>
 #include <iterator>
 
 namespace CGAL {
@@ -31,9 +32,24 @@ CGAL_MESH_REPAIR_CORE_INLINE Guide_surface::Guide_surface(const std::vector<Vec3
     triangles_.emplace_back(polyline[std::size_t(t.first)], polyline[std::size_t(t.second)],
                             polyline[std::size_t(t.third)]);
   }
-  if (triangles_.empty()) return;
+  if (triangles_.empty() || !squares_are_representable()) {
+    triangles_.clear();  // no guide: valid() is false
+    return;
+  }
   tree_.insert(triangles_.begin(), triangles_.end());
   tree_.accelerate_distance_queries();
+}
+
+CGAL_MESH_REPAIR_CORE_INLINE bool Guide_surface::squares_are_representable() const {
+  const auto underflows = [](const Epick::Vector_3& v) {
+    return (v.x() != 0 || v.y() != 0 || v.z() != 0) && !(v.squared_length() >= DBL_MIN);
+  };
+  for (const Epick::Triangle_3& t : triangles_) {
+    if (underflows(t[1] - t[0]) || underflows(t[2] - t[1]) || underflows(t[0] - t[2]) ||
+        underflows(CGAL::cross_product(t[1] - t[0], t[2] - t[0])))
+      return false;
+  }
+  return true;
 }
 
 CGAL_MESH_REPAIR_CORE_INLINE Vec3 Guide_surface::project(const Vec3& p) const {
