@@ -7,6 +7,7 @@
 
 #include <CGAL/Mesh_repair/fill_holes.h>
 #include <CGAL/Mesh_repair/internal/automatic_repair/region_replacement.h>
+#include <CGAL/Mesh_repair/internal/automatic_repair/self_union.h>
 #include <CGAL/Mesh_repair/internal/automatic_repair/solid_union.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/border_cycles.h>
 #include <CGAL/Mesh_repair/internal/mesh_counts.h>
@@ -962,10 +963,11 @@ std::set<std::size_t> components_with_triple_intersections(const PairRange& pair
   return found;
 }
 
-/// Closed parts that still intersect themselves are replaced by their autorefinement
-/// (`remove_self_intersections_of_solid`), within the bounds above. Parts with coplanar
-/// intersecting faces or three faces intersecting pairwise are left as they are: CGAL 5.5's
-/// corefinement does not handle them reliably. Returns the number of parts replaced.
+/// Closed parts that still intersect themselves are replaced by their outer surface, within the
+/// bounds above: CGAL's autorefinement (`remove_self_intersections_of_solid`) where it applies,
+/// else, and where it fails, the exact arrangement of `outer_surface_of_solid` (parts with
+/// coplanar intersecting faces or three faces intersecting pairwise, which CGAL 5.5's
+/// corefinement does not handle reliably). Returns the number of parts replaced.
 template <class PolygonMesh, class VertexPointMap, class GeomTraits, class PairRange>
 std::size_t autorefine_self_intersecting_parts(PolygonMesh& pm, VertexPointMap vpm,
                                                const GeomTraits& traits, const PairRange& pairs,
@@ -983,19 +985,25 @@ std::size_t autorefine_self_intersecting_parts(PolygonMesh& pm, VertexPointMap v
                        CGAL::Polygon_mesh_processing::area(
                            pm, CGAL::parameters::vertex_point_map(vpm).geom_traits(traits));
   const double distance_bound = max_autorefined_distance_fraction * mesh_bbox_diagonal(pm, vpm);
-  std::size_t replaced = 0, refused = 0, removed = 0, added = 0, open = 0;
+  std::size_t replaced = 0, refused = 0, removed = 0, added = 0, open = 0, exact = 0;
   double area_removed = 0;
   std::string last_reason;
   for (std::size_t c : candidates) {
-    if (degenerate.count(c)) continue;
     if (!part_is_closed(pm, faces_of[c])) {
       ++open;
       continue;
     }
     Triangle_soup refined;
     Solid_autorefinement measures;
-    std::string why =
-        remove_self_intersections_of_solid(soup_of_faces(pm, vpm, faces_of[c]), refined, measures);
+    const Triangle_soup part = soup_of_faces(pm, vpm, faces_of[c]);
+    std::string why = degenerate.count(c)
+                          ? std::string("not for CGAL")
+                          : remove_self_intersections_of_solid(part, refined, measures);
+    const bool by_arrangement = !why.empty();
+    if (by_arrangement) {
+      measures = Solid_autorefinement();
+      why = outer_surface_of_solid(part, refined, measures);
+    }
     const double area_lost = measures.area_before - measures.area_after;
     if (why.empty() && area_lost > area_budget)
       why = "it would remove more than " +
@@ -1020,16 +1028,13 @@ std::size_t autorefine_self_intersecting_parts(PolygonMesh& pm, VertexPointMap v
     added += refined.polygons.size();
     area_removed += area_lost;
     ++replaced;
+    if (by_arrangement) ++exact;
   }
   timer.count("parts_autorefined", double(replaced));
   timer.count("autorefined_faces_removed", double(removed));
   timer.count("autorefined_faces_added", double(added));
   timer.count("autorefined_area_removed", area_removed);
-  if (!degenerate.empty())
-    timer.step().notes.push_back(std::to_string(degenerate.size()) +
-                                 " self-intersecting part(s) with coplanar intersecting faces or "
-                                 "three faces intersecting one another not autorefined (CGAL "
-                                 "5.5's corefinement does not handle them reliably)");
+  if (exact > 0) timer.count("parts_autorefined_exactly", double(exact));
   if (open > 0)
     timer.step().notes.push_back(std::to_string(open) +
                                  " self-intersecting open part(s) not autorefined (only a closed "

@@ -1,0 +1,482 @@
+// Copyright (c) 2026 Mesh_repair developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef CGAL_MESH_REPAIR_INTERNAL_AUTOMATIC_REPAIR_SELF_UNION_IMPL_H
+#define CGAL_MESH_REPAIR_INTERNAL_AUTOMATIC_REPAIR_SELF_UNION_IMPL_H
+
+#include <CGAL/Mesh_repair/internal/automatic_repair/self_union.h>
+#include <CGAL/Mesh_repair/internal/automatic_repair/solid_soup.h>
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Constrained_triangulation_plus_2.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/distance.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Projection_traits_xy_3.h>
+#include <CGAL/Projection_traits_xz_3.h>
+#include <CGAL/Projection_traits_yz_3.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/intersections.h>
+
+#include <boost/container/small_vector.hpp>
+
+#include <array>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <unordered_map>
+#include <vector>
+
+namespace CGAL {
+namespace Mesh_repair {
+namespace internal {
+
+namespace self_union {
+
+using Exact = CGAL::Exact_predicates_exact_constructions_kernel;
+using Exact_point = Exact::Point_3;
+using Exact_segment = Exact::Segment_3;
+using Exact_triangle = Exact::Triangle_3;
+using Exact_vector = Exact::Vector_3;
+using Triangle = std::array<std::size_t, 3>;
+
+/// One index per distinct exact point.
+class Point_index {
+ public:
+  std::size_t operator()(const Exact_point& p) {
+    const auto inserted = index_.emplace(p, points.size());
+    if (inserted.second) points.push_back(p);
+    return inserted.first->second;
+  }
+  std::vector<Exact_point> points;
+
+ private:
+  struct Less {
+    bool operator()(const Exact_point& a, const Exact_point& b) const {
+      return CGAL::compare_xyz(a, b) == CGAL::SMALLER;
+    }
+  };
+  std::map<Exact_point, std::size_t, Less> index_;
+};
+
+/// What cuts one face: the points and segments where other faces meet it.
+struct Cuts {
+  std::vector<Exact_point> points;
+  std::vector<Exact_segment> segments;
+};
+
+inline void add_cut(const Exact_point& p, const Exact_point& q, Cuts& a, Cuts& b) {
+  for (Cuts* cuts : {&a, &b}) {
+    if (p == q)
+      cuts->points.push_back(p);
+    else
+      cuts->segments.emplace_back(p, q);
+  }
+}
+
+/// Adds the intersection of faces `a` and `b` that are not coplanar (a point or a segment) to
+/// the cuts of both.
+inline void add_intersection(const Exact_triangle& a, const Exact_triangle& b, Cuts& cuts_a,
+                             Cuts& cuts_b) {
+  const auto result = CGAL::intersection(a, b);
+  if (!result) return;
+  if (const Exact_point* p = boost::get<Exact_point>(&*result))
+    add_cut(*p, *p, cuts_a, cuts_b);
+  else if (const Exact_segment* s = boost::get<Exact_segment>(&*result))
+    add_cut(s->source(), s->target(), cuts_a, cuts_b);
+}
+
+/// The pieces of the coplanar faces `group` cut along one another and along their cuts: one
+/// constrained triangulation of the plane (in the coordinate plane `Projection`, onto which the
+/// faces project one to one), each of its triangles given to every face that contains it, with
+/// that face's orientation. Overlapping faces get the very same pieces there, which a
+/// triangulation per face would not promise (cocircular points, as at the corners of
+/// overlapping rectangles, have two Delaunay triangulations).
+template <class Projection>
+void cut_coplanar_faces(const std::vector<std::size_t>& group,
+                        const std::vector<Exact_triangle>& faces,
+                        const std::unordered_map<std::size_t, Cuts>& cuts, Point_index& index,
+                        std::vector<Triangle>& pieces) {
+  // The "plus" hierarchy keeps the input constraints, so that crossing constraints are
+  // intersected once each, not in cascades of exact constructions.
+  using CDT = CGAL::Constrained_triangulation_plus_2<CGAL::Constrained_Delaunay_triangulation_2<
+      Projection, CGAL::Default, CGAL::Exact_intersections_tag>>;
+  CDT cdt;
+  for (std::size_t f : group) {
+    for (int i = 0; i < 3; ++i) cdt.insert_constraint(faces[f].vertex(i), faces[f].vertex(i + 1));
+    const auto cut = cuts.find(f);
+    if (cut == cuts.end()) continue;
+    for (const Exact_point& p : cut->second.points) cdt.insert(p);
+    for (const Exact_segment& s : cut->second.segments)
+      cdt.insert_constraint(s.source(), s.target());
+  }
+  const auto orientation = Projection().orientation_2_object();
+  for (auto fh : cdt.finite_face_handles()) {
+    const Exact_point &a = fh->vertex(0)->point(), &b = fh->vertex(1)->point(),
+                      &c = fh->vertex(2)->point();
+    const Exact_point centroid = CGAL::centroid(a, b, c);
+    const Triangle ccw{index(a), index(b), index(c)};
+    for (std::size_t f : group) {
+      const Exact_triangle& t = faces[f];
+      const CGAL::Orientation o = orientation(t.vertex(0), t.vertex(1), t.vertex(2));
+      // Every edge of the face is a constraint: a piece is inside it or outside it.
+      if (orientation(t.vertex(0), t.vertex(1), centroid) != o ||
+          orientation(t.vertex(1), t.vertex(2), centroid) != o ||
+          orientation(t.vertex(2), t.vertex(0), centroid) != o)
+        continue;
+      pieces.push_back(o == CGAL::CLOCKWISE ? Triangle{ccw[0], ccw[2], ccw[1]} : ccw);
+    }
+  }
+}
+
+inline void cut_coplanar_faces(const std::vector<std::size_t>& group,
+                               const std::vector<Exact_triangle>& faces,
+                               const std::unordered_map<std::size_t, Cuts>& cuts,
+                               Point_index& index, std::vector<Triangle>& pieces) {
+  const Exact_triangle& t = faces[group.front()];
+  const Exact_vector n = CGAL::normal(t.vertex(0), t.vertex(1), t.vertex(2));
+  const Exact::FT x = CGAL::abs(n.x()), y = CGAL::abs(n.y()), z = CGAL::abs(n.z());
+  if (z >= x && z >= y)
+    cut_coplanar_faces<CGAL::Projection_traits_xy_3<Exact>>(group, faces, cuts, index, pieces);
+  else if (y >= x)
+    cut_coplanar_faces<CGAL::Projection_traits_xz_3<Exact>>(group, faces, cuts, index, pieces);
+  else
+    cut_coplanar_faces<CGAL::Projection_traits_yz_3<Exact>>(group, faces, cuts, index, pieces);
+}
+
+inline bool coplanar(const Exact_triangle& a, const Exact_triangle& b) {
+  for (int i = 0; i < 3; ++i)
+    if (!CGAL::coplanar(a.vertex(0), a.vertex(1), a.vertex(2), b.vertex(i))) return false;
+  return true;
+}
+
+/// Coincident pieces (the same three points, from coplanar overlaps) as one: `face` is the
+/// first piece, `multiplicity` the number of pieces oriented like it minus those reversed.
+struct Piece_group {
+  Triangle face;
+  int multiplicity = 0;
+};
+
+inline std::vector<Piece_group> group_pieces(const std::vector<Triangle>& pieces) {
+  std::map<Triangle, std::size_t> group_of;
+  std::vector<Piece_group> groups;
+  for (const Triangle& t : pieces) {
+    Triangle key = t;
+    std::sort(key.begin(), key.end());
+    const auto inserted = group_of.emplace(key, groups.size());
+    if (inserted.second) groups.push_back({t, 0});
+    Piece_group& g = groups[inserted.first->second];
+    // Same orientation when t is a rotation of the group's face.
+    const bool same = (t[0] == g.face[0] && t[1] == g.face[1]) ||
+                      (t[0] == g.face[1] && t[1] == g.face[2]) ||
+                      (t[0] == g.face[2] && t[1] == g.face[0]);
+    g.multiplicity += same ? 1 : -1;
+  }
+  return groups;
+}
+
+/// Patches: groups joined across edges where exactly two groups of multiplicity +-1 meet with
+/// opposite edge directions (the surface is one oriented sheet there, so the winding numbers on
+/// either side do not change from one to the other). Returns the patch of each group.
+inline std::vector<std::size_t> patches_of(const std::vector<Piece_group>& groups) {
+  std::vector<std::size_t> parent(groups.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  const auto find = [&](std::size_t g) {
+    while (parent[g] != g) g = parent[g] = parent[parent[g]];
+    return g;
+  };
+  std::map<std::pair<std::size_t, std::size_t>, boost::container::small_vector<std::size_t, 2>>
+      edges;
+  for (std::size_t g = 0; g < groups.size(); ++g)
+    for (int i = 0; i < 3; ++i) {
+      const std::size_t a = groups[g].face[i], b = groups[g].face[(i + 1) % 3];
+      edges[{std::min(a, b), std::max(a, b)}].push_back(g);
+    }
+  for (const auto& edge : edges) {
+    if (edge.second.size() != 2) continue;
+    const std::size_t g = edge.second[0], h = edge.second[1];
+    if (std::abs(groups[g].multiplicity) != 1 || groups[g].multiplicity != groups[h].multiplicity)
+      continue;
+    const auto runs = [&](const Triangle& t) {  // whether t runs along the edge from first
+      for (int i = 0; i < 3; ++i)
+        if (t[i] == edge.first.first && t[(i + 1) % 3] == edge.first.second) return true;
+      return false;
+    };
+    if (runs(groups[g].face) != runs(groups[h].face)) parent[find(g)] = find(h);
+  }
+  std::vector<std::size_t> patch(groups.size());
+  for (std::size_t g = 0; g < groups.size(); ++g) patch[g] = find(g);
+  return patch;
+}
+
+/// Winding numbers of the part on the two sides of one piece, by exact ray casting.
+class Winding_classifier {
+ public:
+  Winding_classifier(const std::vector<Exact_point>& points, const std::vector<Piece_group>& groups)
+      : points_(points), groups_(groups) {
+    boxes_.reserve(groups.size());
+    CGAL::Bbox_3 all;
+    for (const Piece_group& g : groups) {
+      CGAL::Bbox_3 box;
+      for (std::size_t v : g.face) box += points[v].bbox();
+      boxes_.push_back(box);
+      all += box;
+    }
+    const double diagonal =
+        std::sqrt(CGAL::square(all.xmax() - all.xmin()) + CGAL::square(all.ymax() - all.ymin()) +
+                  CGAL::square(all.zmax() - all.zmin()));
+    margin_ = 1e-9 * diagonal + 1e-300;
+  }
+
+  /// The winding numbers on the side of group g's normal and on the other side; false when
+  /// every direction tried met an edge or a vertex.
+  bool classify(std::size_t g, int& front, int& back) const {
+    static const double directions[][3] = {{0.5773, 0.3157, 0.7531},   {-0.6131, 0.3519, 0.7071},
+                                           {0.2113, -0.9012, 0.3785},  {-0.4471, -0.5517, -0.7039},
+                                           {0.8819, 0.1161, -0.4571},  {0.1237, 0.9871, -0.1013},
+                                           {-0.9137, 0.2917, -0.2831}, {0.3307, -0.2393, -0.9129}};
+    const Triangle& t = groups_[g].face;
+    const Exact_point centroid = CGAL::centroid(points_[t[0]], points_[t[1]], points_[t[2]]);
+    const Exact_vector normal = CGAL::normal(points_[t[0]], points_[t[1]], points_[t[2]]);
+    for (const auto& d : directions) {
+      const Exact_vector direction(d[0], d[1], d[2]);
+      const CGAL::Sign side = CGAL::sign(normal * direction);
+      if (side == CGAL::ZERO) continue;
+      int winding = 0;
+      if (!winding_along(g, centroid, direction, winding)) continue;
+      // Crossing the piece along its normal lowers the winding number by its multiplicity.
+      if (side == CGAL::POSITIVE) {
+        front = winding;
+        back = winding + groups_[g].multiplicity;
+      } else {
+        back = winding;
+        front = winding - groups_[g].multiplicity;
+      }
+      return true;
+    }
+    return false;
+  }
+
+ private:
+  /// The winding number just off `origin` on the side of `direction`: the signed count of the
+  /// pieces the ray crosses (+1 leaving through a piece's front). False on a degenerate ray.
+  bool winding_along(std::size_t skip, const Exact_point& origin, const Exact_vector& direction,
+                     int& winding) const {
+    const Exact_point ahead = origin + direction;
+    const Core_traits::Ray_3 ray(
+        Core_traits::Point_3(CGAL::to_double(origin.x()), CGAL::to_double(origin.y()),
+                             CGAL::to_double(origin.z())),
+        Core_traits::Vector_3(CGAL::to_double(direction.x()), CGAL::to_double(direction.y()),
+                              CGAL::to_double(direction.z())));
+    for (std::size_t h = 0; h < groups_.size(); ++h) {
+      if (h == skip || groups_[h].multiplicity == 0) continue;
+      const CGAL::Bbox_3& b = boxes_[h];
+      // A conservative filter (boxes widened beyond the rounding of the ray's origin); the
+      // decision below is exact.
+      const CGAL::Bbox_3 widened(b.xmin() - margin_, b.ymin() - margin_, b.zmin() - margin_,
+                                 b.xmax() + margin_, b.ymax() + margin_, b.zmax() + margin_);
+      if (!CGAL::do_intersect(ray, widened)) continue;
+      const Triangle& t = groups_[h].face;
+      const Exact_point &p = points_[t[0]], &q = points_[t[1]], &r = points_[t[2]];
+      const Exact_vector n = CGAL::normal(p, q, r);
+      const CGAL::Sign at = CGAL::sign(n * (origin - p));
+      const CGAL::Sign towards = CGAL::sign(n * direction);
+      // The origin off the piece's plane and the ray going towards it, or no crossing; an
+      // origin on the plane is not inside the piece (pieces meet only along their edges).
+      if (at == CGAL::ZERO || towards == CGAL::ZERO || at == towards) continue;
+      const CGAL::Orientation o1 = CGAL::orientation(origin, ahead, p, q);
+      const CGAL::Orientation o2 = CGAL::orientation(origin, ahead, q, r);
+      const CGAL::Orientation o3 = CGAL::orientation(origin, ahead, r, p);
+      const bool has_positive =
+          o1 == CGAL::POSITIVE || o2 == CGAL::POSITIVE || o3 == CGAL::POSITIVE;
+      const bool has_negative =
+          o1 == CGAL::NEGATIVE || o2 == CGAL::NEGATIVE || o3 == CGAL::NEGATIVE;
+      if (has_positive && has_negative) continue;  // the line misses the piece
+      if (o1 == CGAL::COPLANAR || o2 == CGAL::COPLANAR || o3 == CGAL::COPLANAR)
+        return false;  // through an edge or a vertex: another direction
+      winding += towards == CGAL::POSITIVE ? groups_[h].multiplicity : -groups_[h].multiplicity;
+    }
+    return true;
+  }
+
+  const std::vector<Exact_point>& points_;
+  const std::vector<Piece_group>& groups_;
+  std::vector<CGAL::Bbox_3> boxes_;
+  double margin_ = 0;
+};
+
+/// A power of two near 1e-9 of the diagonal of `mesh`'s bounding box.
+inline double grid_spacing(const Core_mesh& mesh) {
+  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(mesh);
+  const double diagonal =
+      std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                CGAL::square(box.zmax() - box.zmin()));
+  return diagonal > 0 ? std::exp2(std::floor(std::log2(1e-9 * diagonal))) : 0.0;
+}
+
+/// `soup` with each coordinate rounded to a multiple of `spacing` (a power of two, so that
+/// the rounding is exact) where the multiple fits a double's mantissa, the points that meet
+/// merged and the faces that lose a corner so dropped (needles of the noise, of no area).
+inline Triangle_soup snapped_to_grid(const Triangle_soup& soup, double spacing) {
+  if (!(spacing > 0) || !std::isfinite(spacing)) return soup;
+  const auto snap = [&](double x) {
+    const double steps = x / spacing;
+    return std::abs(steps) < 0x1p52 ? std::round(steps) * spacing : x;
+  };
+  Triangle_soup snapped;
+  std::map<std::array<double, 3>, std::size_t> index;
+  std::vector<std::size_t> new_index;
+  for (const auto& p : soup.points) {
+    const std::array<double, 3> q{snap(p.x()), snap(p.y()), snap(p.z())};
+    const auto inserted = index.emplace(q, snapped.points.size());
+    if (inserted.second) snapped.points.emplace_back(q[0], q[1], q[2]);
+    new_index.push_back(inserted.first->second);
+  }
+  for (const auto& t : soup.polygons) {
+    std::vector<std::size_t> u{new_index[t[0]], new_index[t[1]], new_index[t[2]]};
+    if (u[0] != u[1] && u[1] != u[2] && u[0] != u[2]) snapped.polygons.push_back(std::move(u));
+  }
+  return snapped;
+}
+
+/// The faces of `soup` with exact coordinates.
+inline std::vector<Exact_triangle> exact_faces(const Triangle_soup& soup) {
+  std::vector<Exact_triangle> faces;
+  for (const auto& t : soup.polygons) {
+    std::array<Exact_point, 3> corners;
+    for (int i = 0; i < 3; ++i) {
+      const auto& p = soup.points[t[i]];
+      corners[i] = Exact_point(p.x(), p.y(), p.z());
+    }
+    faces.emplace_back(corners[0], corners[1], corners[2]);
+  }
+  return faces;
+}
+
+}  // namespace self_union
+
+CGAL_MESH_REPAIR_CORE_INLINE std::string outer_surface_of_solid(const Triangle_soup& solid,
+                                                                Triangle_soup& out,
+                                                                Solid_autorefinement& measures,
+                                                                const Self_union_limits& limits) {
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  using namespace self_union;
+  Core_mesh mesh;
+  std::string why = solid_union::to_closed_mesh(solid, mesh);
+  if (!why.empty()) return why;
+  if (mesh.number_of_faces() > limits.max_faces) return "the part has too many faces";
+  measures.area_before = PMP::area(mesh);
+  // On the grid when that keeps every face a triangle: CAD exports write 1e-15 for 0, and
+  // the exact arrangement of such noise has pieces 1e-15 wide that rounding would fold.
+  Triangle_soup part = snapped_to_grid(solid, grid_spacing(mesh));
+  Core_mesh snapped;
+  if (!solid_union::to_closed_mesh(part, snapped).empty()) {
+    part = solid;
+    snapped = mesh;
+  }
+  const std::vector<Exact_triangle> faces = exact_faces(part);
+  // Faces of no area (three points on a line: caps of the noise, or of the input) bound nothing
+  // and give no piece; the faces along them meet one another along their edges, and cut one
+  // another there.
+  std::vector<char> flat(faces.size());
+  for (std::size_t f = 0; f < faces.size(); ++f) flat[f] = faces[f].is_degenerate();
+  std::vector<std::pair<Core_mesh::Face_index, Core_mesh::Face_index>> pairs;
+  PMP::self_intersections(snapped, std::back_inserter(pairs));
+  if (pairs.size() > limits.max_pairs) return "the part has too many intersecting face pairs";
+
+  // The arrangement: faces cut along their intersections, points merged exactly.
+  // Coplanar intersecting faces are cut together (groups of a union-find); the others along
+  // their intersection points and segments.
+  std::vector<std::size_t> group_of(faces.size());
+  std::iota(group_of.begin(), group_of.end(), 0);
+  const auto find = [&](std::size_t f) {
+    while (group_of[f] != f) f = group_of[f] = group_of[group_of[f]];
+    return f;
+  };
+  std::unordered_map<std::size_t, Cuts> cuts;
+  for (const auto& pair : pairs) {
+    const std::size_t a = std::size_t(pair.first), b = std::size_t(pair.second);
+    if (flat[a] || flat[b]) continue;
+    if (coplanar(faces[a], faces[b]))
+      group_of[find(a)] = find(b);
+    else
+      add_intersection(faces[a], faces[b], cuts[a], cuts[b]);
+  }
+  // Constraints crossing one another inside a face cost exact constructions built on exact
+  // constructions; many of them (faces fanned around an axis, all crossing near it) take minutes.
+  double cut_work = 0;
+  for (const auto& cut : cuts) {
+    const std::size_t segments = cut.second.segments.size();
+    if (segments > limits.max_cuts_per_face) return "a face is cut by too many others";
+    cut_work += double(segments) * double(segments);
+  }
+  if (cut_work > limits.max_cut_work) return "its faces are cut by too many others";
+  std::map<std::size_t, std::vector<std::size_t>> groups_to_cut;
+  std::vector<std::size_t> group_size(faces.size(), 0);
+  for (std::size_t f = 0; f < faces.size(); ++f) ++group_size[find(f)];
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    if (group_size[find(f)] > 1 || cuts.count(f)) groups_to_cut[find(f)].push_back(f);
+  Point_index index;
+  std::vector<Triangle> pieces;
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    if (flat[f] || groups_to_cut.count(find(f))) continue;
+    pieces.push_back(
+        {index(faces[f].vertex(0)), index(faces[f].vertex(1)), index(faces[f].vertex(2))});
+  }
+  for (const auto& group : groups_to_cut)
+    cut_coplanar_faces(group.second, faces, cuts, index, pieces);
+
+  // Each patch classified once, by its first piece.
+  const std::vector<Piece_group> groups = group_pieces(pieces);
+  const std::vector<std::size_t> patch = patches_of(groups);
+  std::map<std::size_t, std::pair<int, int>> windings;
+  for (std::size_t g = 0; g < groups.size(); ++g) windings.emplace(patch[g], std::pair<int, int>());
+  if (double(windings.size()) * double(groups.size()) > limits.max_ray_tests)
+    return "the part's arrangement has too many pieces to classify";
+  const Winding_classifier classifier(index.points, groups);
+  for (auto& w : windings)
+    if (!classifier.classify(w.first, w.second.first, w.second.second))
+      return "no ray from a piece avoided the edges of the others";
+
+  // The pieces between winding zero and a non-zero winding, facing the zero side.
+  std::vector<std::size_t> new_index(index.points.size(), std::size_t(-1));
+  out = Triangle_soup();
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    const auto [front, back] = windings[patch[g]];
+    if ((front == 0) == (back == 0)) continue;
+    Triangle t = groups[g].face;
+    if (front != 0) std::swap(t[1], t[2]);
+    std::vector<std::size_t> polygon;
+    for (std::size_t v : t) {
+      if (new_index[v] == std::size_t(-1)) {
+        new_index[v] = out.points.size();
+        const Exact_point& p = index.points[v];
+        out.points.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()),
+                                CGAL::to_double(p.z()));
+      }
+      polygon.push_back(new_index[v]);
+    }
+    out.polygons.push_back(std::move(polygon));
+  }
+
+  // The result as the caller will use it: rounded to doubles, checked again.
+  Core_mesh result;
+  why = solid_union::to_closed_mesh(out, result);
+  if (!why.empty()) return "its outer surface: " + why;
+  if (!result.is_valid(false)) return "its outer surface is not a valid mesh";
+  if (PMP::does_self_intersect(result))
+    return "its outer surface intersects itself once rounded to doubles";
+  if (!PMP::does_bound_a_volume(result)) return "its outer surface bounds no volume";
+  measures.area_after = PMP::area(result);
+  measures.largest_distance =
+      PMP::max_distance_to_triangle_mesh<CGAL::Sequential_tag>(mesh.points(), result);
+  return {};
+}
+
+}  // namespace internal
+}  // namespace Mesh_repair
+}  // namespace CGAL
+
+#endif  // CGAL_MESH_REPAIR_INTERNAL_AUTOMATIC_REPAIR_SELF_UNION_IMPL_H
