@@ -1129,9 +1129,10 @@ void step_remove_self_intersections(PolygonMesh& pm, VertexPointMap vpm, const G
 
 /// With `merge_intersecting_solids`, closed parts that intersect one another (an assembly of
 /// interpenetrating solids) are replaced by their union (CGAL's corefinement,
-/// solid_union.h), one union per group of parts linked by intersections. A group with a part
-/// that is open, intersects itself or bounds no volume, or with coplanar faces of two parts that
-/// meet (`coplanar_faces`), keeps its parts, and a note says why.
+/// solid_union.h), one union per group of parts linked by intersections; where two parts have
+/// coplanar faces that meet (`coplanar_faces`), or the corefinement fails, by the exact
+/// arrangement of self_union.h. A group with a part that is open, intersects itself or bounds no
+/// volume keeps its parts, and a note says why.
 template <class PolygonMesh, class VertexPointMap, class GeomTraits>
 void step_merge_intersecting_solids(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
                                     Any_visitor visitor, Repair_result& result) {
@@ -1156,16 +1157,22 @@ void step_merge_intersecting_solids(PolygonMesh& pm, VertexPointMap vpm, const G
   std::map<std::size_t, std::vector<std::size_t>> groups;  // by the group's first part
   for (std::size_t c = 0; c < components; ++c)
     if (involved[c]) groups[*linked.find(handle[c])].push_back(c);
-  std::size_t merged = 0, unions = 0, refused = 0, removed = 0, added = 0;
+  std::size_t merged = 0, unions = 0, refused = 0, removed = 0, added = 0, exact_unions = 0;
   for (const auto& group : groups) {
     std::vector<Triangle_soup> solids;
     for (std::size_t c : group.second) solids.push_back(soup_of_faces(pm, vpm, faces_of[c]));
     Triangle_soup united;
     const bool flat_contact = std::any_of(group.second.begin(), group.second.end(),
                                           [&](std::size_t c) { return coplanar[c]; });
-    const std::string why = flat_contact ? "two of them have coplanar faces that meet, which "
-                                           "CGAL's corefinement does not handle reliably"
-                                         : union_of_solids(solids, united);
+    std::string why = flat_contact ? "two of them have coplanar faces that meet, which "
+                                     "CGAL's corefinement does not handle reliably"
+                                   : union_of_solids(solids, united);
+    if (!why.empty()) {
+      // The exact arrangement takes coplanar contacts, and what the corefinement refused.
+      const std::string exact_why = union_of_solids_exactly(solids, united);
+      why = exact_why.empty() ? std::string() : why + "; the exact arrangement: " + exact_why;
+      exact_unions += exact_why.empty();
+    }
     if (!why.empty()) {
       ++refused;
       timer.step().notes.push_back(std::to_string(group.second.size()) +
@@ -1198,6 +1205,7 @@ void step_merge_intersecting_solids(PolygonMesh& pm, VertexPointMap vpm, const G
   timer.count("groups_of_intersecting_parts", double(groups.size()));
   timer.count("parts_merged", double(merged));
   timer.count("unions", double(unions));
+  if (exact_unions > 0) timer.count("unions_by_exact_arrangement", double(exact_unions));
   timer.count("groups_kept_apart", double(refused));
   timer.count("faces_removed", double(removed));
   timer.count("faces_added", double(added));

@@ -475,6 +475,28 @@ CGAL_MESH_REPAIR_CORE_INLINE std::string outer_surface_of_solid(const Triangle_s
   return {};
 }
 
+CGAL_MESH_REPAIR_CORE_INLINE std::string union_of_solids_exactly(
+    const std::vector<Triangle_soup>& solids, Triangle_soup& out, const Self_union_limits& limits) {
+  if (solids.size() < 2) return "fewer than two parts";
+  Triangle_soup all;
+  for (const Triangle_soup& solid : solids) {
+    // Each part outward, so that the winding numbers of overlapping parts add up.
+    Core_mesh mesh;
+    const std::string why = solid_union::to_solid(solid, mesh);
+    if (!why.empty()) return why;
+    Triangle_soup outward;
+    solid_union::to_soup(mesh, outward);
+    const std::size_t offset = all.points.size();
+    all.points.insert(all.points.end(), outward.points.begin(), outward.points.end());
+    for (auto polygon : outward.polygons) {
+      for (std::size_t& v : polygon) v += offset;
+      all.polygons.push_back(std::move(polygon));
+    }
+  }
+  Solid_autorefinement measures;
+  return outer_surface_of_solid(all, out, measures, limits);
+}
+
 }  // namespace internal
 }  // namespace Mesh_repair
 }  // namespace CGAL

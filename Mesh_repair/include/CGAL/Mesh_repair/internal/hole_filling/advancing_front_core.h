@@ -560,23 +560,52 @@ class Advancing_front {
         return found;
       }
     }
+    const auto consider = [&](const std::vector<std::size_t>& cell) {
+      for (std::size_t p : cell) {
+        const Vec3 d = sub(points_[p], c);
+        if (dot(d, d) <= radius * radius && std::abs(frame.height(points_[p])) <= 0.5 * radius)
+          found.push_back(p);
+      }
+    };
+    const std::int64_t cells = (hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1);
+    if (cells > std::int64_t(grid_.size())) {
+      // Fewer occupied cells than cells in the box (a large radius over a sparse front: up to
+      // 65^3 look-ups per query): the occupied cells of the box, in the order of the loops below.
+      for (const auto& cell : cells_in_box(lo, hi)) consider(*cell.second);
+      return found;
+    }
     for (std::int64_t i = lo[0]; i <= hi[0]; ++i) {
       for (std::int64_t j = lo[1]; j <= hi[1]; ++j) {
         for (std::int64_t k = lo[2]; k <= hi[2]; ++k) {
-          const std::uint64_t key = (std::uint64_t(i & 0x1fffff) << 42) |
-                                    (std::uint64_t(j & 0x1fffff) << 21) |
-                                    std::uint64_t(k & 0x1fffff);
-          const auto it = grid_.find(key);
-          if (it == grid_.end()) continue;
-          for (std::size_t p : it->second) {
-            const Vec3 d = sub(points_[p], c);
-            if (dot(d, d) <= radius * radius && std::abs(frame.height(points_[p])) <= 0.5 * radius)
-              found.push_back(p);
-          }
+          const auto it = grid_.find(point_cell_key({i, j, k}));
+          if (it != grid_.end()) consider(it->second);
         }
       }
     }
     return found;
+  }
+  static std::uint64_t point_cell_key(const std::array<std::int64_t, 3>& c) {
+    return (std::uint64_t(c[0] & 0x1fffff) << 42) | (std::uint64_t(c[1] & 0x1fffff) << 21) |
+           std::uint64_t(c[2] & 0x1fffff);
+  }
+  /// The occupied cells of the front's grid whose key the cells lo..hi (at most 65 per axis)
+  /// have, each with those cell indices, sorted as the loops over lo..hi visit them.
+  std::vector<std::pair<std::array<std::int64_t, 3>, const std::vector<std::size_t>*>> cells_in_box(
+      const std::array<std::int64_t, 3>& lo, const std::array<std::int64_t, 3>& hi) const {
+    std::vector<std::pair<std::array<std::int64_t, 3>, const std::vector<std::size_t>*>> in_box;
+    for (const auto& cell : grid_) {
+      std::array<std::int64_t, 3> index;
+      bool inside = true;
+      for (int d = 0; d < 3 && inside; ++d) {
+        const std::int64_t masked = std::int64_t((cell.first >> (42 - 21 * d)) & 0x1fffff);
+        index[d] = lo[d] + ((masked - lo[d]) & 0x1fffff);  // the one index of lo..hi so masked
+        inside = index[d] <= hi[d];
+      }
+      if (inside) in_box.emplace_back(index, &cell.second);
+    }
+    std::sort(in_box.begin(), in_box.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
+    return in_box;
   }
 
   /// A candidate fan: triangles to add, each listed (a, b, c) counterclockwise.
