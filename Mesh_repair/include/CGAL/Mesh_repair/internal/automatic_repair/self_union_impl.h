@@ -35,39 +35,39 @@ namespace internal {
 
 namespace self_union {
 
-using Exact = CGAL::Exact_predicates_exact_constructions_kernel;
-using Exact_point = Exact::Point_3;
-using Exact_segment = Exact::Segment_3;
-using Exact_triangle = Exact::Triangle_3;
-using Exact_vector = Exact::Vector_3;
-using Triangle = std::array<std::size_t, 3>;
+using Epeck = CGAL::Exact_predicates_exact_constructions_kernel;
+using Epeck_point = Epeck::Point_3;
+using Epeck_segment = Epeck::Segment_3;
+using Epeck_triangle = Epeck::Triangle_3;
+using Epeck_vector = Epeck::Vector_3;
+using Index_triangle = std::array<std::size_t, 3>;
 
 /// One index per distinct exact point.
 class Point_index {
  public:
-  std::size_t operator()(const Exact_point& p) {
+  std::size_t operator()(const Epeck_point& p) {
     const auto inserted = index_.emplace(p, points.size());
     if (inserted.second) points.push_back(p);
     return inserted.first->second;
   }
-  std::vector<Exact_point> points;
+  std::vector<Epeck_point> points;
 
  private:
   struct Less {
-    bool operator()(const Exact_point& a, const Exact_point& b) const {
+    bool operator()(const Epeck_point& a, const Epeck_point& b) const {
       return CGAL::compare_xyz(a, b) == CGAL::SMALLER;
     }
   };
-  std::map<Exact_point, std::size_t, Less> index_;
+  std::map<Epeck_point, std::size_t, Less> index_;
 };
 
 /// What cuts one face: the points and segments where other faces meet it.
 struct Cuts {
-  std::vector<Exact_point> points;
-  std::vector<Exact_segment> segments;
+  std::vector<Epeck_point> points;
+  std::vector<Epeck_segment> segments;
 };
 
-inline void add_cut(const Exact_point& p, const Exact_point& q, Cuts& a, Cuts& b) {
+inline void add_cut(const Epeck_point& p, const Epeck_point& q, Cuts& a, Cuts& b) {
   for (Cuts* cuts : {&a, &b}) {
     if (p == q)
       cuts->points.push_back(p);
@@ -78,13 +78,13 @@ inline void add_cut(const Exact_point& p, const Exact_point& q, Cuts& a, Cuts& b
 
 /// Adds the intersection of faces `a` and `b` that are not coplanar (a point or a segment) to
 /// the cuts of both.
-inline void add_intersection(const Exact_triangle& a, const Exact_triangle& b, Cuts& cuts_a,
+inline void add_intersection(const Epeck_triangle& a, const Epeck_triangle& b, Cuts& cuts_a,
                              Cuts& cuts_b) {
   const auto result = CGAL::intersection(a, b);
   if (!result) return;
-  if (const Exact_point* p = boost::get<Exact_point>(&*result))
+  if (const Epeck_point* p = boost::get<Epeck_point>(&*result))
     add_cut(*p, *p, cuts_a, cuts_b);
-  else if (const Exact_segment* s = boost::get<Exact_segment>(&*result))
+  else if (const Epeck_segment* s = boost::get<Epeck_segment>(&*result))
     add_cut(s->source(), s->target(), cuts_a, cuts_b);
 }
 
@@ -96,9 +96,9 @@ inline void add_intersection(const Exact_triangle& a, const Exact_triangle& b, C
 /// overlapping rectangles, have two Delaunay triangulations).
 template <class Projection>
 void cut_coplanar_faces(const std::vector<std::size_t>& group,
-                        const std::vector<Exact_triangle>& faces,
+                        const std::vector<Epeck_triangle>& faces,
                         const std::unordered_map<std::size_t, Cuts>& cuts, Point_index& index,
-                        std::vector<Triangle>& pieces) {
+                        std::vector<Index_triangle>& pieces) {
   // The "plus" hierarchy keeps the input constraints, so that crossing constraints are
   // intersected once each, not in cascades of exact constructions.
   using CDT = CGAL::Constrained_triangulation_plus_2<CGAL::Constrained_Delaunay_triangulation_2<
@@ -108,45 +108,45 @@ void cut_coplanar_faces(const std::vector<std::size_t>& group,
     for (int i = 0; i < 3; ++i) cdt.insert_constraint(faces[f].vertex(i), faces[f].vertex(i + 1));
     const auto cut = cuts.find(f);
     if (cut == cuts.end()) continue;
-    for (const Exact_point& p : cut->second.points) cdt.insert(p);
-    for (const Exact_segment& s : cut->second.segments)
+    for (const Epeck_point& p : cut->second.points) cdt.insert(p);
+    for (const Epeck_segment& s : cut->second.segments)
       cdt.insert_constraint(s.source(), s.target());
   }
   const auto orientation = Projection().orientation_2_object();
   for (auto fh : cdt.finite_face_handles()) {
-    const Exact_point &a = fh->vertex(0)->point(), &b = fh->vertex(1)->point(),
+    const Epeck_point &a = fh->vertex(0)->point(), &b = fh->vertex(1)->point(),
                       &c = fh->vertex(2)->point();
-    const Exact_point centroid = CGAL::centroid(a, b, c);
-    const Triangle ccw{index(a), index(b), index(c)};
+    const Epeck_point centroid = CGAL::centroid(a, b, c);
+    const Index_triangle ccw{index(a), index(b), index(c)};
     for (std::size_t f : group) {
-      const Exact_triangle& t = faces[f];
+      const Epeck_triangle& t = faces[f];
       const CGAL::Orientation o = orientation(t.vertex(0), t.vertex(1), t.vertex(2));
       // Every edge of the face is a constraint: a piece is inside it or outside it.
       if (orientation(t.vertex(0), t.vertex(1), centroid) != o ||
           orientation(t.vertex(1), t.vertex(2), centroid) != o ||
           orientation(t.vertex(2), t.vertex(0), centroid) != o)
         continue;
-      pieces.push_back(o == CGAL::CLOCKWISE ? Triangle{ccw[0], ccw[2], ccw[1]} : ccw);
+      pieces.push_back(o == CGAL::CLOCKWISE ? Index_triangle{ccw[0], ccw[2], ccw[1]} : ccw);
     }
   }
 }
 
 inline void cut_coplanar_faces(const std::vector<std::size_t>& group,
-                               const std::vector<Exact_triangle>& faces,
+                               const std::vector<Epeck_triangle>& faces,
                                const std::unordered_map<std::size_t, Cuts>& cuts,
-                               Point_index& index, std::vector<Triangle>& pieces) {
-  const Exact_triangle& t = faces[group.front()];
-  const Exact_vector n = CGAL::normal(t.vertex(0), t.vertex(1), t.vertex(2));
-  const Exact::FT x = CGAL::abs(n.x()), y = CGAL::abs(n.y()), z = CGAL::abs(n.z());
+                               Point_index& index, std::vector<Index_triangle>& pieces) {
+  const Epeck_triangle& t = faces[group.front()];
+  const Epeck_vector n = CGAL::normal(t.vertex(0), t.vertex(1), t.vertex(2));
+  const Epeck::FT x = CGAL::abs(n.x()), y = CGAL::abs(n.y()), z = CGAL::abs(n.z());
   if (z >= x && z >= y)
-    cut_coplanar_faces<CGAL::Projection_traits_xy_3<Exact>>(group, faces, cuts, index, pieces);
+    cut_coplanar_faces<CGAL::Projection_traits_xy_3<Epeck>>(group, faces, cuts, index, pieces);
   else if (y >= x)
-    cut_coplanar_faces<CGAL::Projection_traits_xz_3<Exact>>(group, faces, cuts, index, pieces);
+    cut_coplanar_faces<CGAL::Projection_traits_xz_3<Epeck>>(group, faces, cuts, index, pieces);
   else
-    cut_coplanar_faces<CGAL::Projection_traits_yz_3<Exact>>(group, faces, cuts, index, pieces);
+    cut_coplanar_faces<CGAL::Projection_traits_yz_3<Epeck>>(group, faces, cuts, index, pieces);
 }
 
-inline bool coplanar(const Exact_triangle& a, const Exact_triangle& b) {
+inline bool coplanar(const Epeck_triangle& a, const Epeck_triangle& b) {
   for (int i = 0; i < 3; ++i)
     if (!CGAL::coplanar(a.vertex(0), a.vertex(1), a.vertex(2), b.vertex(i))) return false;
   return true;
@@ -155,15 +155,15 @@ inline bool coplanar(const Exact_triangle& a, const Exact_triangle& b) {
 /// Coincident pieces (the same three points, from coplanar overlaps) as one: `face` is the
 /// first piece, `multiplicity` the number of pieces oriented like it minus those reversed.
 struct Piece_group {
-  Triangle face;
+  Index_triangle face;
   int multiplicity = 0;
 };
 
-inline std::vector<Piece_group> group_pieces(const std::vector<Triangle>& pieces) {
-  std::map<Triangle, std::size_t> group_of;
+inline std::vector<Piece_group> group_pieces(const std::vector<Index_triangle>& pieces) {
+  std::map<Index_triangle, std::size_t> group_of;
   std::vector<Piece_group> groups;
-  for (const Triangle& t : pieces) {
-    Triangle key = t;
+  for (const Index_triangle& t : pieces) {
+    Index_triangle key = t;
     std::sort(key.begin(), key.end());
     const auto inserted = group_of.emplace(key, groups.size());
     if (inserted.second) groups.push_back({t, 0});
@@ -199,7 +199,7 @@ inline std::vector<std::size_t> patches_of(const std::vector<Piece_group>& group
     const std::size_t g = edge.second[0], h = edge.second[1];
     if (std::abs(groups[g].multiplicity) != 1 || groups[g].multiplicity != groups[h].multiplicity)
       continue;
-    const auto runs = [&](const Triangle& t) {  // whether t runs along the edge from first
+    const auto runs = [&](const Index_triangle& t) {  // whether t runs along the edge from first
       for (int i = 0; i < 3; ++i)
         if (t[i] == edge.first.first && t[(i + 1) % 3] == edge.first.second) return true;
       return false;
@@ -214,7 +214,7 @@ inline std::vector<std::size_t> patches_of(const std::vector<Piece_group>& group
 /// Winding numbers of the part on the two sides of one piece, by exact ray casting.
 class Winding_classifier {
  public:
-  Winding_classifier(const std::vector<Exact_point>& points, const std::vector<Piece_group>& groups)
+  Winding_classifier(const std::vector<Epeck_point>& points, const std::vector<Piece_group>& groups)
       : points_(points), groups_(groups) {
     boxes_.reserve(groups.size());
     CGAL::Bbox_3 all;
@@ -237,11 +237,11 @@ class Winding_classifier {
                                            {0.2113, -0.9012, 0.3785},  {-0.4471, -0.5517, -0.7039},
                                            {0.8819, 0.1161, -0.4571},  {0.1237, 0.9871, -0.1013},
                                            {-0.9137, 0.2917, -0.2831}, {0.3307, -0.2393, -0.9129}};
-    const Triangle& t = groups_[g].face;
-    const Exact_point centroid = CGAL::centroid(points_[t[0]], points_[t[1]], points_[t[2]]);
-    const Exact_vector normal = CGAL::normal(points_[t[0]], points_[t[1]], points_[t[2]]);
+    const Index_triangle& t = groups_[g].face;
+    const Epeck_point centroid = CGAL::centroid(points_[t[0]], points_[t[1]], points_[t[2]]);
+    const Epeck_vector normal = CGAL::normal(points_[t[0]], points_[t[1]], points_[t[2]]);
     for (const auto& d : directions) {
-      const Exact_vector direction(d[0], d[1], d[2]);
+      const Epeck_vector direction(d[0], d[1], d[2]);
       const CGAL::Sign side = CGAL::sign(normal * direction);
       if (side == CGAL::ZERO) continue;
       int winding = 0;
@@ -262,9 +262,9 @@ class Winding_classifier {
  private:
   /// The winding number just off `origin` on the side of `direction`: the signed count of the
   /// pieces the ray crosses (+1 leaving through a piece's front). False on a degenerate ray.
-  bool winding_along(std::size_t skip, const Exact_point& origin, const Exact_vector& direction,
+  bool winding_along(std::size_t skip, const Epeck_point& origin, const Epeck_vector& direction,
                      int& winding) const {
-    const Exact_point ahead = origin + direction;
+    const Epeck_point ahead = origin + direction;
     const Core_traits::Ray_3 ray(
         Core_traits::Point_3(CGAL::to_double(origin.x()), CGAL::to_double(origin.y()),
                              CGAL::to_double(origin.z())),
@@ -278,9 +278,9 @@ class Winding_classifier {
       const CGAL::Bbox_3 widened(b.xmin() - margin_, b.ymin() - margin_, b.zmin() - margin_,
                                  b.xmax() + margin_, b.ymax() + margin_, b.zmax() + margin_);
       if (!CGAL::do_intersect(ray, widened)) continue;
-      const Triangle& t = groups_[h].face;
-      const Exact_point &p = points_[t[0]], &q = points_[t[1]], &r = points_[t[2]];
-      const Exact_vector n = CGAL::normal(p, q, r);
+      const Index_triangle& t = groups_[h].face;
+      const Epeck_point &p = points_[t[0]], &q = points_[t[1]], &r = points_[t[2]];
+      const Epeck_vector n = CGAL::normal(p, q, r);
       const CGAL::Sign at = CGAL::sign(n * (origin - p));
       const CGAL::Sign towards = CGAL::sign(n * direction);
       // The origin off the piece's plane and the ray going towards it, or no crossing; an
@@ -301,7 +301,7 @@ class Winding_classifier {
     return true;
   }
 
-  const std::vector<Exact_point>& points_;
+  const std::vector<Epeck_point>& points_;
   const std::vector<Piece_group>& groups_;
   std::vector<CGAL::Bbox_3> boxes_;
   double margin_ = 0;
@@ -342,13 +342,13 @@ inline Triangle_soup snapped_to_grid(const Triangle_soup& soup, double spacing) 
 }
 
 /// The faces of `soup` with exact coordinates.
-inline std::vector<Exact_triangle> exact_faces(const Triangle_soup& soup) {
-  std::vector<Exact_triangle> faces;
+inline std::vector<Epeck_triangle> exact_faces(const Triangle_soup& soup) {
+  std::vector<Epeck_triangle> faces;
   for (const auto& t : soup.polygons) {
-    std::array<Exact_point, 3> corners;
+    std::array<Epeck_point, 3> corners;
     for (int i = 0; i < 3; ++i) {
       const auto& p = soup.points[t[i]];
-      corners[i] = Exact_point(p.x(), p.y(), p.z());
+      corners[i] = Epeck_point(p.x(), p.y(), p.z());
     }
     faces.emplace_back(corners[0], corners[1], corners[2]);
   }
@@ -376,7 +376,7 @@ CGAL_MESH_REPAIR_CORE_INLINE std::string outer_surface_of_solid(const Triangle_s
     part = solid;
     snapped = mesh;
   }
-  const std::vector<Exact_triangle> faces = exact_faces(part);
+  const std::vector<Epeck_triangle> faces = exact_faces(part);
   // Faces of no area (three points on a line: caps of the noise, or of the input) bound nothing
   // and give no piece; the faces along them meet one another along their edges, and cut one
   // another there.
@@ -419,7 +419,7 @@ CGAL_MESH_REPAIR_CORE_INLINE std::string outer_surface_of_solid(const Triangle_s
   for (std::size_t f = 0; f < faces.size(); ++f)
     if (group_size[find(f)] > 1 || cuts.count(f)) groups_to_cut[find(f)].push_back(f);
   Point_index index;
-  std::vector<Triangle> pieces;
+  std::vector<Index_triangle> pieces;
   for (std::size_t f = 0; f < faces.size(); ++f) {
     if (flat[f] || groups_to_cut.count(find(f))) continue;
     pieces.push_back(
@@ -446,13 +446,13 @@ CGAL_MESH_REPAIR_CORE_INLINE std::string outer_surface_of_solid(const Triangle_s
   for (std::size_t g = 0; g < groups.size(); ++g) {
     const auto [front, back] = windings[patch[g]];
     if ((front == 0) == (back == 0)) continue;
-    Triangle t = groups[g].face;
+    Index_triangle t = groups[g].face;
     if (front != 0) std::swap(t[1], t[2]);
     std::vector<std::size_t> polygon;
     for (std::size_t v : t) {
       if (new_index[v] == std::size_t(-1)) {
         new_index[v] = out.points.size();
-        const Exact_point& p = index.points[v];
+        const Epeck_point& p = index.points[v];
         out.points.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()),
                                 CGAL::to_double(p.z()));
       }
