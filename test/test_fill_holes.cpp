@@ -46,6 +46,10 @@ bool closed_valid_and_clean(const Mesh& mesh) {
          !support::does_self_intersect(mesh);
 }
 
+bool note_starts_with(const MR::Hole_fill_report& report, const std::string& start) {
+  return !report.notes.empty() && report.notes.front().rfind(start, 0) == 0;
+}
+
 /// Largest distance of a vertex to the unit sphere, over the bounding-box diagonal.
 double normalised_sphere_einf(const Mesh& mesh) {
   double worst = 0;
@@ -152,6 +156,37 @@ void expect_front_fills_punched_holes(const std::string& name, double radius,
     for (const auto& pair : pairs)
       EXPECT_FALSE(in_patch.count(pair.first) || in_patch.count(pair.second)) << name;
   }
+}
+
+// The benchmark keeps its holes only one ring apart, and their borders are jagged: enlarged
+// ring by ring on its own, the hole met its neighbour or pinched on 4 of these 18 holes, which
+// then kept the default order. Grown around pinches, stopped at other borders and enlarged by
+// fewer rings where needed, every hole is validated.
+TEST(FillHolesDemoData, SelfValidationEnlargesHolesBesideOtherHolesAndOnJaggedBorders) {
+  const fs::path path = fs::path(MESH_REPAIR_DEMO_DATA_DIR) / "head.off";
+  if (!fs::exists(path)) GTEST_SKIP() << path << " absent (scripts/fetch_demo_data.sh)";
+  Mesh base;
+  MR::Soup_repair_report soup;
+  ASSERT_EQ(MR::read_mesh(path.string(), base, soup), "");
+  for (double radius : {0.05, 0.12})
+    for (unsigned seed : {1u, 2u, 3u}) {
+      Mesh mesh = base;
+      const auto punched = MR::punch_holes(
+          mesh, MR::parameters::number_of_holes(3).hole_radius(radius).random_seed(seed));
+      ASSERT_EQ(punched.holes.size(), 3u);
+      for (const auto& hole : punched.holes) {
+        const MR::Hole_fill_report report =
+            MR::fill_hole(mesh, hole.border_halfedge,
+                          MR::parameters::fill_method(MR::Fill_method::self_validated));
+        ASSERT_TRUE(report.filled) << "radius " << radius << " seed " << seed;
+        EXPECT_TRUE(note_starts_with(report, "self-validation on the hole enlarged by "))
+            << "radius " << radius << " seed " << seed << ": " << report.notes.front();
+      }
+      // head.off has borders of its own; only the punched holes are filled.
+      EXPECT_EQ(count_border_cycles(mesh), count_border_cycles(base));
+      EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+      EXPECT_FALSE(support::does_self_intersect(mesh)) << "radius " << radius << " seed " << seed;
+    }
 }
 
 // Before the 3D checks and the closing of stuck fronts, 7 of these 9 elephant holes (radius
@@ -370,10 +405,6 @@ Mesh sphere_with_ring_hole() {
 }
 
 /// The note of a self-validated fill starts with what the ranking was measured on.
-bool note_starts_with(const MR::Hole_fill_report& report, const std::string& start) {
-  return !report.notes.empty() && report.notes.front().rfind(start, 0) == 0;
-}
-
 // On a sphere the ring around a hole has the hole's own curvature, so the method it ranks first
 // must be as faithful on the hole as the best of the candidates.
 TEST(FillHoles, SelfValidatedChoiceIsAsFaithfulAsTheBestCandidateOnASphere) {
