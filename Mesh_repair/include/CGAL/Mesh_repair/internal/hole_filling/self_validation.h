@@ -92,7 +92,7 @@ bool pinched_by(
 /// vertex they would pinch, and never a face touching another border, so that the enlarged hole
 /// stays one simple cycle on irregular and jagged borders and beside other holes. (Without
 /// the growth and the stop, 22 of the 90 disc holes of the tuning suite could not be enlarged
-/// by 2 rings, and none by 4; with them, 5 are left, enlarged by fewer rings or not at all.)
+/// by 2 rings, and none by 4; with them, 6 are left.)
 template <class Point>
 std::unordered_set<typename CGAL::Surface_mesh<Point>::Face_index> faces_within_rings(
     const CGAL::Surface_mesh<Point>& mesh, typename CGAL::Surface_mesh<Point>::Halfedge_index h,
