@@ -515,6 +515,76 @@ TEST(AutomaticRepair, AnOpenEndLyingOnAnotherPartIsClosedAndTheContactKept) {
   for (const Point& p : wall) EXPECT_TRUE(output.count(p)) << p;
 }
 
+// A tube slid over a plank (a baluster reaching into a rail, as in Debian's railing models): its
+// upper end, inside the plank's extent, flares into a skirt that folds down and out, and the
+// skirt's outer edge is the hole. Every patch of that edge cuts the tube's own wall, so no method
+// fills it where it is; growing the hole by the skirt leaves the wall's top, whose cap crosses the
+// plank, so it is filled only when growing against other parts (step "failed holes grown against
+// other parts"). The plank and the tube stay two parts, and no patch meets its own part.
+TEST(AutomaticRepair, AFoldedOutEndReachingIntoAnotherPartIsGrownAndClosedAgainstIt) {
+  const double pi = std::acos(-1.0);
+  Mesh mesh;
+  MR::make_subdivided_cube<Mesh, Point>(mesh, 2.0, 4);
+  for (auto vertex : mesh.vertices()) {  // the plank: x in [0.9, 1.1], y and z in [0, 2]
+    const Point& p = mesh.point(vertex);
+    mesh.point(vertex) = Point(0.9 + 0.1 * p.x(), p.y(), p.z());
+  }
+  const int sides = 24, rows = 31;
+  const double radius = 0.3, bottom = -1.0, top = 1.5;
+  const auto around = [&](double r, double angle, double z) {
+    return mesh.add_vertex(Point(1 + r * std::cos(angle), 1 + r * std::sin(angle), z));
+  };
+  std::vector<std::vector<Mesh::Vertex_index>> wall(rows + 1);
+  for (int i = 0; i <= rows; ++i)
+    for (int j = 0; j < sides; ++j)
+      wall[i].push_back(around(radius, 2 * pi * j / sides, bottom + (top - bottom) * i / rows));
+  std::vector<Mesh::Vertex_index> skirt;
+  for (int j = 0; j < sides; ++j)
+    skirt.push_back(around(1.3 * radius, 2 * pi * (j + 0.5) / sides, top - 0.1));
+  const auto next = [&](int j) { return (j + 1) % sides; };
+  for (int i = 0; i < rows; ++i)
+    for (int j = 0; j < sides; ++j) {
+      mesh.add_face(wall[i][j], wall[i][next(j)], wall[i + 1][next(j)]);
+      mesh.add_face(wall[i][j], wall[i + 1][next(j)], wall[i + 1][j]);
+    }
+  for (int j = 0; j < sides; ++j) {
+    mesh.add_face(wall[rows][j], wall[rows][next(j)], skirt[j]);
+    mesh.add_face(wall[rows][next(j)], skirt[next(j)], skirt[j]);
+  }
+  const auto apex = mesh.add_vertex(Point(1, 1, bottom - 0.1));
+  for (int j = 0; j < sides; ++j) mesh.add_face(wall[0][next(j)], wall[0][j], apex);
+  ASSERT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  ASSERT_EQ(count_border_cycles(mesh), 1u);
+  ASSERT_GT(self_intersection_count(mesh), 0u);  // the wall crosses the plank
+  std::vector<Point> wall_points;
+  for (const auto& ring : wall)
+    for (auto vertex : ring) wall_points.push_back(mesh.point(vertex));
+
+  const auto result = MR::automatic_repair(mesh);
+  EXPECT_EQ(result.holes.failed, 0u);
+  EXPECT_TRUE(CGAL::is_closed(mesh));
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  EXPECT_EQ(support::connected_components(mesh), 2u);
+  EXPECT_EQ(result.self_intersections_in_patches, 0u);
+  EXPECT_EQ(result.status(), MR::Repair_status::complete_except_kept);
+  // Neither the growth with the plank an obstacle nor the fill against it without growth closed
+  // it; growing by the skirt's ring against the plank did.
+  const auto* grown = find_step(result, "failed holes grown");
+  ASSERT_NE(grown, nullptr);
+  EXPECT_EQ(grown->count("faces_removed"), 0.0);
+  const auto* against = find_step(result, "failed holes filled against other parts");
+  ASSERT_NE(against, nullptr);
+  EXPECT_EQ(against->count("filled"), 0.0);
+  const auto* grown_against = find_step(result, "failed holes grown against other parts");
+  ASSERT_NE(grown_against, nullptr);
+  EXPECT_EQ(grown_against->count("filled_with_rings_1"), 1.0);
+  EXPECT_EQ(grown_against->count("faces_removed"), 2.0 * sides);
+  // The wall is kept whole: every wall vertex is still there.
+  std::set<Point> output;
+  for (auto vertex : mesh.vertices()) output.insert(mesh.point(vertex));
+  for (const Point& p : wall_points) EXPECT_TRUE(output.count(p)) << p;
+}
+
 // Two interpenetrating spheres and a third apart, with `merge_intersecting_solids`: the two
 // become their union (one closed part, no self-intersection, the faces inside removed: its
 // volume is that of the union of the two balls), the third is untouched.

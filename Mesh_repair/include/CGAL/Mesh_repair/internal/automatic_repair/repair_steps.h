@@ -610,27 +610,28 @@ bool faces_fit_the_border(
 /// Holes whose every patch was rejected (on scans: folded, overlapping and needle faces along a
 /// jagged border make every patch meet the border's own faces) are grown by the faces within
 /// 1, then 2, then 3 vertex rings of their border and filled again; a grown hole that still
-/// cannot be filled gets its faces back (Region_replacer). `failed` holds the indices of
-/// `result.holes.holes` whose groups are `groups`.
-template <class PolygonMesh, class VertexPointMap, class GeomTraits, class Group>
+/// cannot be filled gets its faces back (Region_replacer). `border_points` holds a border point
+/// of each hole of `result.holes.holes` (the exact position finds the hole again after its
+/// halfedges were removed and put back); only the holes `eligible` marks are grown (all when it
+/// is empty). `step` names the step in the report.
+template <class PolygonMesh, class VertexPointMap, class GeomTraits, class Point>
 void step_grow_failed_holes(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
-                            const Repair_options& options, const std::vector<Group>& groups,
+                            const Repair_options& options, const std::vector<Point>& border_points,
+                            const std::vector<bool>& eligible, const char* step,
                             Any_visitor visitor, Repair_result& result) {
-  using Point = typename boost::property_traits<VertexPointMap>::value_type;
+  using Group = Hole_group<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor>;
   using face_descriptor = typename boost::graph_traits<PolygonMesh>::face_descriptor;
   std::vector<std::size_t> failed;
   std::vector<Point> keys;
   for (std::size_t k = 0; k < result.holes.holes.size(); ++k) {
     const Hole_fill_report& hole = result.holes.holes[k];
-    if (hole.filled || hole.skipped) continue;
+    if (hole.filled || hole.skipped || (!eligible.empty() && !eligible[k])) continue;
     if (hole.border_edges > max_grown_hole_edges) continue;
     failed.push_back(k);
-    // The exact position of a border vertex finds the hole again after its halfedges were
-    // removed and put back.
-    keys.push_back(get(vpm, target(groups[k].outer, pm)));
+    keys.push_back(border_points[k]);
   }
   if (failed.empty()) return;
-  Step_timer timer(result, "failed holes grown", visitor);
+  Step_timer timer(result, step, visitor);
   timer.count("holes", double(failed.size()));
   Region_replacement_report total;
   std::size_t not_grown = 0;
@@ -699,6 +700,16 @@ void step_grow_failed_holes(PolygonMesh& pm, VertexPointMap vpm, const GeomTrait
   }
 }
 
+/// The fill options of the retries against other parts: other parts are no obstacle, and the
+/// stuck fronts get no second budget (each hole already had one: a hole no loop of which has a
+/// valid triangulation spent it once more, 5 s each, 134 s over the 101 holes of a Debian
+/// furniture model, where none was closed so). The first rounds of each closing still run.
+inline Fill_options other_parts_no_obstacle(Fill_options fill) {
+  fill.other_parts_are_obstacles = false;
+  fill.advancing_front.remnant_visits_per_hole = 0;
+  return fill;
+}
+
 /// The holes still open, of parts that already meet another part, are filled once more with the
 /// faces of other parts no obstacle (`Fill_options::other_parts_are_obstacles`): a tube trimmed
 /// against a post has its open end on the post's face, where every patch touches the post. The
@@ -706,22 +717,24 @@ void step_grow_failed_holes(PolygonMesh& pm, VertexPointMap vpm, const GeomTrait
 /// kept like any other (counted in the verification as `pairs_between_components_added`, listed in
 /// `kept`), and `merge_intersecting_solids` can then unite the closed parts.
 template <class PolygonMesh, class VertexPointMap, class GeomTraits, class Point>
-void step_fill_meeting_other_parts(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
-                                   const Repair_options& options,
-                                   const std::vector<Point>& border_points, Any_visitor visitor,
-                                   Repair_result& result) {
+std::vector<bool> fill_meeting_other_parts(PolygonMesh& pm, VertexPointMap vpm,
+                                           const GeomTraits& traits, const Repair_options& options,
+                                           const std::vector<Point>& border_points,
+                                           Any_visitor visitor, Repair_result& result) {
+  // The holes of parts in contact that this step retried and could not fill.
+  std::vector<bool> still_failed(result.holes.holes.size(), false);
   std::map<Point, std::size_t> failed_at;  // a border point of each hole still open
   for (std::size_t k = 0; k < result.holes.holes.size(); ++k)
     if (!result.holes.holes[k].filled && !result.holes.holes[k].skipped)
       failed_at.emplace(border_points[k], k);
-  if (failed_at.empty()) return;
+  if (failed_at.empty()) return still_failed;
   Step_timer timer(result, "failed holes filled against other parts", visitor);
   // Only parts that already meet another part (an assembly): a patch must not create the first
   // contact between two parts that were apart. A mesh of one part needs no enumeration.
   const auto component = face_components(pm);
   const bool one_part = std::all_of(component.begin(), component.end(),
                                     [](const auto& entry) { return entry.second == 0; });
-  if (one_part) return;
+  if (one_part) return still_failed;
   const auto pairs = bounded_self_intersections(pm).pairs;
   std::unordered_set<std::size_t> in_contact;
   for (const auto& pair : pairs)
@@ -743,13 +756,8 @@ void step_fill_meeting_other_parts(PolygonMesh& pm, VertexPointMap vpm, const Ge
     }
   }
   timer.count("parts_in_contact", double(in_contact.size()));
-  if (retried.empty()) return;
-  Fill_options fill = options.fill;
-  fill.other_parts_are_obstacles = false;
-  // Each of these holes already had its stuck fronts' budget: a hole no loop of which has a valid
-  // triangulation spent it once more here (5 s each: 134 s over the 101 holes of a Debian
-  // furniture model, where none was closed so). The first rounds of each closing still run.
-  fill.advancing_front.remnant_visits_per_hole = 0;
+  if (retried.empty()) return still_failed;
+  const Fill_options fill = other_parts_no_obstacle(options.fill);
   std::vector<Fill_patch<PolygonMesh>> patches;
   const Fill_result again =
       fill_hole_groups(pm, vpm, traits, retried, patches, fill, visitor, false);
@@ -770,6 +778,29 @@ void step_fill_meeting_other_parts(PolygonMesh& pm, VertexPointMap vpm, const Ge
   if (again.cancelled) result.cancelled = true;
   timer.count("holes", double(retried.size()));
   timer.count("filled", double(filled));
+  for (std::size_t j = 0; j < retried.size(); ++j)
+    still_failed[hole_of[j]] = !again.holes[j].filled;
+  return still_failed;
+}
+
+/// `fill_meeting_other_parts`, then the holes it could not fill grown against other parts: the
+/// open end of a tube that reaches into a post, folded out into a flat lip (Debian's railing and
+/// furniture models), is closed only once the lip is gone, and then its cap lies in the post. The
+/// same rule: a patch may meet the other part, never its own part nor another patch.
+template <class PolygonMesh, class VertexPointMap, class GeomTraits, class Point>
+void step_fill_meeting_other_parts(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
+                                   const Repair_options& options,
+                                   const std::vector<Point>& border_points, Any_visitor visitor,
+                                   Repair_result& result) {
+  const std::vector<bool> still_failed =
+      fill_meeting_other_parts(pm, vpm, traits, options, border_points, visitor, result);
+  if (result.cancelled ||
+      std::none_of(still_failed.begin(), still_failed.end(), [](bool failed) { return failed; }))
+    return;
+  Repair_options grown = options;
+  grown.fill = other_parts_no_obstacle(options.fill);
+  step_grow_failed_holes(pm, vpm, traits, grown, border_points, still_failed,
+                         "failed holes grown against other parts", visitor, result);
 }
 
 /// Fills the holes, grows the failed ones, fills what is left against other parts; returns a
@@ -798,7 +829,9 @@ std::vector<typename boost::property_traits<VertexPointMap>::value_type> step_fi
   // A border point of each hole finds it again after patches were added and rolled back.
   std::vector<typename boost::property_traits<VertexPointMap>::value_type> border_points;
   for (const auto& group : groups) border_points.push_back(get(vpm, target(group.outer, pm)));
-  if (!result.cancelled) step_grow_failed_holes(pm, vpm, traits, options, groups, visitor, result);
+  if (!result.cancelled)
+    step_grow_failed_holes(pm, vpm, traits, options, border_points, {}, "failed holes grown",
+                           visitor, result);
   // Against other parts last: a hole whose grown border leaves the other part is closed cleanly
   // by the growth; what is left meets the other part wherever it is closed.
   if (!result.cancelled && options.fill.check_self_intersections)
