@@ -516,12 +516,11 @@ TEST(AutomaticRepair, AnOpenEndLyingOnAnotherPartIsClosedAndTheContactKept) {
 }
 
 // A tube slid over a plank (a baluster reaching into a rail, as in Debian's railing models): its
-// upper end, inside the plank's extent, flares into a skirt that folds down and out, and the
-// skirt's outer edge is the hole. Every patch of that edge cuts the tube's own wall, so no method
-// fills it where it is; growing the hole by the skirt leaves the wall's top, whose cap crosses the
-// plank, so it is filled only when growing against other parts (step "failed holes grown against
-// other parts"). The plank and the tube stay two parts, and no patch meets its own part.
-TEST(AutomaticRepair, AFoldedOutEndReachingIntoAnotherPartIsGrownAndClosedAgainstIt) {
+// upper end, inside the plank's extent, flares into a skirt of `skirt_radius` x the tube's radius
+// that folds down by `skirt_drop`, and the skirt's outer edge is the hole. Every patch of that
+// edge cuts the tube's own wall, so no method fills it where it is; growing the hole by the skirt
+// leaves the wall's top, whose cap crosses the plank. `wall` receives the wall's points.
+Mesh tube_through_plank(double skirt_radius, double skirt_drop, std::vector<Point>& wall) {
   const double pi = std::acos(-1.0);
   Mesh mesh;
   MR::make_subdivided_cube<Mesh, Point>(mesh, 2.0, 4);
@@ -534,31 +533,40 @@ TEST(AutomaticRepair, AFoldedOutEndReachingIntoAnotherPartIsGrownAndClosedAgains
   const auto around = [&](double r, double angle, double z) {
     return mesh.add_vertex(Point(1 + r * std::cos(angle), 1 + r * std::sin(angle), z));
   };
-  std::vector<std::vector<Mesh::Vertex_index>> wall(rows + 1);
+  std::vector<std::vector<Mesh::Vertex_index>> rings(rows + 1);
   for (int i = 0; i <= rows; ++i)
     for (int j = 0; j < sides; ++j)
-      wall[i].push_back(around(radius, 2 * pi * j / sides, bottom + (top - bottom) * i / rows));
+      rings[i].push_back(around(radius, 2 * pi * j / sides, bottom + (top - bottom) * i / rows));
   std::vector<Mesh::Vertex_index> skirt;
   for (int j = 0; j < sides; ++j)
-    skirt.push_back(around(1.3 * radius, 2 * pi * (j + 0.5) / sides, top - 0.1));
+    skirt.push_back(around(skirt_radius * radius, 2 * pi * (j + 0.5) / sides, top - skirt_drop));
   const auto next = [&](int j) { return (j + 1) % sides; };
   for (int i = 0; i < rows; ++i)
     for (int j = 0; j < sides; ++j) {
-      mesh.add_face(wall[i][j], wall[i][next(j)], wall[i + 1][next(j)]);
-      mesh.add_face(wall[i][j], wall[i + 1][next(j)], wall[i + 1][j]);
+      mesh.add_face(rings[i][j], rings[i][next(j)], rings[i + 1][next(j)]);
+      mesh.add_face(rings[i][j], rings[i + 1][next(j)], rings[i + 1][j]);
     }
   for (int j = 0; j < sides; ++j) {
-    mesh.add_face(wall[rows][j], wall[rows][next(j)], skirt[j]);
-    mesh.add_face(wall[rows][next(j)], skirt[next(j)], skirt[j]);
+    mesh.add_face(rings[rows][j], rings[rows][next(j)], skirt[j]);
+    mesh.add_face(rings[rows][next(j)], skirt[next(j)], skirt[j]);
   }
   const auto apex = mesh.add_vertex(Point(1, 1, bottom - 0.1));
-  for (int j = 0; j < sides; ++j) mesh.add_face(wall[0][next(j)], wall[0][j], apex);
+  for (int j = 0; j < sides; ++j) mesh.add_face(rings[0][next(j)], rings[0][j], apex);
+  wall.clear();
+  for (const auto& ring : rings)
+    for (auto vertex : ring) wall.push_back(mesh.point(vertex));
+  return mesh;
+}
+
+// A narrow skirt (6% wider than the tube, 0.015 lower, within 1% of the diagonal of its patch) is
+// removed and the end closed against the plank (step "failed holes grown against other parts").
+// The plank and the tube stay two parts, and no patch meets its own part.
+TEST(AutomaticRepair, AFoldedOutEndReachingIntoAnotherPartIsGrownAndClosedAgainstIt) {
+  std::vector<Point> wall;
+  Mesh mesh = tube_through_plank(1.06, 0.015, wall);
   ASSERT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
   ASSERT_EQ(count_border_cycles(mesh), 1u);
   ASSERT_GT(self_intersection_count(mesh), 0u);  // the wall crosses the plank
-  std::vector<Point> wall_points;
-  for (const auto& ring : wall)
-    for (auto vertex : ring) wall_points.push_back(mesh.point(vertex));
 
   const auto result = MR::automatic_repair(mesh);
   EXPECT_EQ(result.holes.failed, 0u);
@@ -578,11 +586,29 @@ TEST(AutomaticRepair, AFoldedOutEndReachingIntoAnotherPartIsGrownAndClosedAgains
   const auto* grown_against = find_step(result, "failed holes grown against other parts");
   ASSERT_NE(grown_against, nullptr);
   EXPECT_EQ(grown_against->count("filled_with_rings_1"), 1.0);
-  EXPECT_EQ(grown_against->count("faces_removed"), 2.0 * sides);
+  EXPECT_EQ(grown_against->count("faces_removed"), 48.0);  // the skirt's two faces per side
   // The wall is kept whole: every wall vertex is still there.
   std::set<Point> output;
   for (auto vertex : mesh.vertices()) output.insert(mesh.point(vertex));
-  for (const Point& p : wall_points) EXPECT_TRUE(output.count(p)) << p;
+  for (const Point& p : wall) EXPECT_TRUE(output.count(p)) << p;
+}
+
+// A wide skirt (1.3 x the tube's radius, 0.1 lower: 3.6% of the diagonal from the cap that
+// would replace it) is not removed: the cap would not stand for the faces it replaced. The hole
+// stays open and is listed, and the mesh is the input's.
+TEST(AutomaticRepair, AGrownHoleWhosePatchWouldBeFarFromTheRemovedFacesIsLeftOpen) {
+  std::vector<Point> wall;
+  Mesh mesh = tube_through_plank(1.3, 0.1, wall);
+  const std::size_t faces = mesh.number_of_faces();
+  const auto result = MR::automatic_repair(mesh);
+  EXPECT_EQ(result.holes.failed, 1u);
+  EXPECT_EQ(result.status(), MR::Repair_status::incomplete);
+  EXPECT_EQ(count_border_cycles(mesh), 1u);
+  EXPECT_EQ(mesh.number_of_faces(), faces);
+  const auto* grown_against = find_step(result, "failed holes grown against other parts");
+  ASSERT_NE(grown_against, nullptr);
+  EXPECT_GE(grown_against->count("patches_too_far"), 1.0);
+  EXPECT_EQ(grown_against->count("faces_removed"), 0.0);
 }
 
 // Two interpenetrating spheres and a third apart, with `merge_intersecting_solids`: the two

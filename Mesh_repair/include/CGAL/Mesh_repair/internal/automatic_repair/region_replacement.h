@@ -15,11 +15,16 @@
 #include <CGAL/Mesh_repair/internal/hole_filling/border_cycles.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/patch_check.h>
 
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/iterator.h>
 
 #include <array>
+#include <cmath>
 #include <cstddef>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <unordered_map>
@@ -37,6 +42,7 @@ struct Region_replacement_report {
   std::size_t faces_removed = 0;       ///< in the replaced regions
   std::size_t faces_added = 0;         ///< by their patches
   std::size_t faces_not_restored = 0;  ///< of failed regions, could not be put back (counted)
+  std::size_t regions_too_far = 0;     ///< filled, but a patch was too far from the faces removed
   std::vector<bool> replaced;          ///< per region given, in the caller's order
 };
 
@@ -134,16 +140,31 @@ class Region_replacer {
       transactions.emplace_back(pm_, vpm_, cycles_of_tie[t]);
     }
 
+    std::vector<double> edge_length(units, 0.0), edges(units, 0.0);  // of the holes, per tie
+    for (std::size_t k = 0; k < groups.size(); ++k) {
+      const std::size_t t = find(tie, units_of_group[k].front());
+      add_border_edges(groups[k], edge_length[t], edges[t]);
+    }
     std::vector<Fill_patch<PolygonMesh>> patches;
     const Fill_result filled =
         fill_hole_groups(pm_, vpm_, traits_, groups, patches, options_, visitor_, false);
     fill_results.push_back(filled);
-    // A tie succeeds when it opened holes and every one of them was filled.
+    // A tie succeeds when it opened holes and every one of them was filled (and, with a
+    // deviation bound, its patches stay near the faces it removed).
     std::vector<bool> tie_ok(units, false);
     for (std::size_t k = 0; k < groups.size(); ++k)
       tie_ok[find(tie, units_of_group[k].front())] = true;
     for (std::size_t k = 0; k < groups.size(); ++k)
       if (!filled.holes[k].filled) tie_ok[find(tie, units_of_group[k].front())] = false;
+    if (max_deviation_in_border_edges > 0)
+      for (std::size_t t = 0; t < units; ++t)
+        if (tie_ok[t] &&
+            !near_removed_faces(t, tie, removed, groups, units_of_group, patches,
+                                (std::min)(max_deviation, max_deviation_in_border_edges *
+                                                              edge_length[t] / edges[t]))) {
+          tie_ok[t] = false;
+          ++report.regions_too_far;
+        }
     for (std::size_t k = 0; k < groups.size(); ++k) {
       const std::size_t t = find(tie, units_of_group[k].front());
       if (tie_ok[t]) {
@@ -168,6 +189,11 @@ class Region_replacer {
   }
 
   std::vector<Fill_result> fill_results;  ///< of every call, for the reports
+  /// When positive, a region is replaced only if every corner of its removed faces lies within
+  /// this many mean border edges of its holes from their patches, and within `max_deviation`:
+  /// the patch stands for the faces it replaces instead of rebuilding the surface (0: no bound).
+  double max_deviation_in_border_edges = 0;
+  double max_deviation = std::numeric_limits<double>::infinity();
 
  private:
   /// A region as removed: its faces (corner vertices and positions), the halfedges of the kept
@@ -324,6 +350,50 @@ class Region_replacer {
         if (!kept) unit.leaving.insert(v);
       }
     }
+  }
+
+  /// Adds the lengths and the count of the border edges of `group`.
+  void add_border_edges(const Group& group, double& length, double& count) const {
+    const auto add = [&](halfedge_descriptor cycle) {
+      for (halfedge_descriptor h : halfedges_around_face(cycle, pm_)) {
+        length += std::sqrt(CGAL::to_double(
+            CGAL::squared_distance(get(vpm_, source(h, pm_)), get(vpm_, target(h, pm_)))));
+        count += 1;
+      }
+    };
+    add(group.outer);
+    for (halfedge_descriptor island : group.islands) add(island);
+  }
+
+  /// True when every corner of the faces the units of tie `t` removed lies within `bound` of the
+  /// patches of its holes.
+  bool near_removed_faces(std::size_t t, std::vector<std::size_t>& tie,
+                          const std::vector<Removed>& removed, const std::vector<Group>& groups,
+                          const std::vector<std::vector<std::size_t>>& units_of_group,
+                          const std::vector<Fill_patch<PolygonMesh>>& patches, double bound) {
+    using Triangle = typename GeomTraits::Triangle_3;
+    using Primitive =
+        CGAL::AABB_triangle_primitive<GeomTraits, typename std::vector<Triangle>::const_iterator>;
+    std::vector<Triangle> triangles;
+    for (std::size_t k = 0; k < groups.size(); ++k) {
+      if (find(tie, units_of_group[k].front()) != t) continue;
+      for (face_descriptor f : patches[k].faces) {
+        const halfedge_descriptor h = halfedge(f, pm_);
+        triangles.emplace_back(get(vpm_, source(h, pm_)), get(vpm_, target(h, pm_)),
+                               get(vpm_, target(next(h, pm_), pm_)));
+      }
+    }
+    if (triangles.empty()) return true;
+    CGAL::AABB_tree<CGAL::AABB_traits<GeomTraits, Primitive>> tree(triangles.begin(),
+                                                                   triangles.end());
+    const double squared_bound = bound * bound;
+    for (std::size_t u = 0; u < removed.size(); ++u) {
+      if (removed[u].skipped || find(tie, u) != t) continue;
+      for (const auto& corners : removed[u].positions)
+        for (const Point& p : corners)
+          if (CGAL::to_double(tree.squared_distance(p)) > squared_bound) return false;
+    }
+    return true;
   }
 
   void remove_faces(Removed& unit) {

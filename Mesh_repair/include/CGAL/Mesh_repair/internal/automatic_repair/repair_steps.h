@@ -559,14 +559,18 @@ Region_replacement_report replace_regions(
     Any_visitor visitor,
     const std::vector<std::vector<typename boost::graph_traits<PolygonMesh>::face_descriptor>>&
         regions,
-    Region_replacement_report& total) {
+    Region_replacement_report& total, double max_deviation_in_border_edges = 0,
+    double max_deviation = std::numeric_limits<double>::infinity()) {
   const Fill_options fill = replacement_fill_options(options.fill);
   Region_replacer<PolygonMesh, VertexPointMap, GeomTraits> replacer(pm, vpm, traits, fill, visitor);
+  replacer.max_deviation_in_border_edges = max_deviation_in_border_edges;
+  replacer.max_deviation = max_deviation;
   const Region_replacement_report round = replacer.replace(regions);
   total.regions_replaced += round.regions_replaced;
   total.faces_removed += round.faces_removed;
   total.faces_added += round.faces_added;
   total.faces_not_restored += round.faces_not_restored;
+  total.regions_too_far += round.regions_too_far;
   return round;
 }
 
@@ -613,12 +617,16 @@ bool faces_fit_the_border(
 /// cannot be filled gets its faces back (Region_replacer). `border_points` holds a border point
 /// of each hole of `result.holes.holes` (the exact position finds the hole again after its
 /// halfedges were removed and put back); only the holes `eligible` marks are grown (all when it
-/// is empty). `step` names the step in the report.
+/// is empty). `step` names the step in the report; `max_deviation_in_border_edges` bounds how
+/// far the removed faces may lie from the patch, in mean border edges and in
+/// `max_deviation_in_diagonals` of the mesh's bounding box (Region_replacer; 0: no bound).
 template <class PolygonMesh, class VertexPointMap, class GeomTraits, class Point>
 void step_grow_failed_holes(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
                             const Repair_options& options, const std::vector<Point>& border_points,
                             const std::vector<bool>& eligible, const char* step,
-                            Any_visitor visitor, Repair_result& result) {
+                            Any_visitor visitor, Repair_result& result,
+                            double max_deviation_in_border_edges = 0,
+                            double max_deviation_in_diagonals = 0) {
   using Group = Hole_group<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor>;
   using face_descriptor = typename boost::graph_traits<PolygonMesh>::face_descriptor;
   std::vector<std::size_t> failed;
@@ -633,6 +641,9 @@ void step_grow_failed_holes(PolygonMesh& pm, VertexPointMap vpm, const GeomTrait
   if (failed.empty()) return;
   Step_timer timer(result, step, visitor);
   timer.count("holes", double(failed.size()));
+  const double max_deviation = max_deviation_in_diagonals > 0
+                                   ? max_deviation_in_diagonals * mesh_bbox_diagonal(pm, vpm)
+                                   : std::numeric_limits<double>::infinity();
   Region_replacement_report total;
   std::size_t not_grown = 0;
   for (int rings = 1; rings <= max_hole_growth_rings && !failed.empty(); ++rings) {
@@ -663,7 +674,8 @@ void step_grow_failed_holes(PolygonMesh& pm, VertexPointMap vpm, const GeomTrait
       in_round.push_back(i);
     }
     const Region_replacement_report round =
-        replace_regions(pm, vpm, traits, options, visitor, regions, total);
+        replace_regions(pm, vpm, traits, options, visitor, regions, total,
+                        max_deviation_in_border_edges, max_deviation);
     std::vector<std::size_t> still_failed;
     std::vector<Point> still_keys;
     std::vector<bool> done(failed.size(), false);
@@ -693,12 +705,21 @@ void step_grow_failed_holes(PolygonMesh& pm, VertexPointMap vpm, const GeomTrait
   timer.count("faces_added", double(total.faces_added));
   timer.count("still_failed", double(failed.size() + not_grown));
   if (not_grown > 0) timer.count("not_grown_faces_too_long", double(not_grown));
+  if (total.regions_too_far > 0) timer.count("patches_too_far", double(total.regions_too_far));
   if (total.faces_not_restored > 0) {
     timer.count("faces_not_restored", double(total.faces_not_restored));
     timer.step().notes.push_back(std::to_string(total.faces_not_restored) +
                                  " face(s) around holes that stayed open could not be put back");
   }
 }
+
+/// Holes grown against other parts are replaced only where every removed face corner lies
+/// within two mean border edges of the patch and within 1% of the mesh's diagonal (the issue's
+/// "nothing lost"): the lip of a tube's end (railing models: within one edge) goes, a car
+/// body's panels rebuilt as membranes (sweethome3d's concept sedan: input points moved by 2.4%
+/// of the diagonal without the bound) do not.
+constexpr double max_deviation_against_other_parts = 2.0;
+constexpr double max_deviation_against_other_parts_in_diagonals = 0.01;
 
 /// The fill options of the retries against other parts: other parts are no obstacle, and the
 /// stuck fronts get no second budget (each hole already had one: a hole no loop of which has a
@@ -800,7 +821,9 @@ void step_fill_meeting_other_parts(PolygonMesh& pm, VertexPointMap vpm, const Ge
   Repair_options grown = options;
   grown.fill = other_parts_no_obstacle(options.fill);
   step_grow_failed_holes(pm, vpm, traits, grown, border_points, still_failed,
-                         "failed holes grown against other parts", visitor, result);
+                         "failed holes grown against other parts", visitor, result,
+                         max_deviation_against_other_parts,
+                         max_deviation_against_other_parts_in_diagonals);
 }
 
 /// Fills the holes, grows the failed ones, fills what is left against other parts; returns a

@@ -141,7 +141,8 @@ class Face_box_cache {
  public:
   /// With `other_parts_are_obstacles` false, a query returns only faces of the connected
   /// components of the faces it excludes (the hole's ring) and faces of kept patches: a patch may
-  /// then meet the faces other parts had, never another patch.
+  /// then meet the faces other parts had. The patches of other parts are returned apart when the
+  /// caller asks (`other_parts_patches`): the check lets a patch cross them, not lie on them.
   Face_box_cache(const PolygonMesh& pm, VertexPointMap vpm, bool other_parts_are_obstacles = true)
       : pm_(pm), vpm_(vpm), other_parts_are_obstacles_(other_parts_are_obstacles) {}
 
@@ -170,9 +171,12 @@ class Face_box_cache {
 
   /// The faces (not in `exclude`) whose box overlaps `box`, in the order they entered the
   /// cache (the order a scan of every box gives); without `other_parts_are_obstacles`, only
-  /// those of the components of the faces of `exclude` and those of kept patches.
+  /// those of the components of the faces of `exclude` and those of kept patches, the patches of
+  /// other components in `other_parts_patches` instead when it is given.
   template <class FaceSet>
-  std::vector<face_descriptor> overlapping(const CGAL::Bbox_3& box, const FaceSet& exclude) const {
+  std::vector<face_descriptor> overlapping(
+      const CGAL::Bbox_3& box, const FaceSet& exclude,
+      std::vector<face_descriptor>* other_parts_patches = nullptr) const {
     CGAL_precondition(built_);
     std::unordered_set<std::size_t> parts;
     if (!other_parts_are_obstacles_)
@@ -194,11 +198,11 @@ class Face_box_cache {
     std::vector<face_descriptor> found;
     std::unordered_set<face_descriptor> seen;  // a moved face is in the cache twice
     for (std::size_t i : candidates) {
-      if (!parts.empty() && !parts.count(component_of(faces_[i])) && !patch_faces_.count(faces_[i]))
-        continue;
+      const bool other_part = !parts.empty() && !parts.count(component_of(faces_[i]));
+      if (other_part && !patch_faces_.count(faces_[i])) continue;
       if (CGAL::do_overlap(boxes_[i], box) && exclude.count(faces_[i]) == 0 &&
           seen.insert(faces_[i]).second)
-        found.push_back(faces_[i]);
+        (other_part && other_parts_patches ? *other_parts_patches : found).push_back(faces_[i]);
     }
     return found;
   }
@@ -307,11 +311,42 @@ class Face_box_cache {
   std::size_t cells_per_axis_ = 1;
   std::vector<std::vector<std::size_t>> cells_;  ///< indices into faces_/boxes_
   std::unordered_map<face_descriptor, std::size_t> component_;
-  std::unordered_set<face_descriptor> patch_faces_;  ///< of kept patches: always obstacles
+  std::unordered_set<face_descriptor> patch_faces_;  ///< of kept patches
 };
+
+/// Pairs of a face of `patch` and a face of `others` (no shared vertex) that lie in one plane
+/// and overlap, by exact predicates: two parts' patches on one plane would be duplicated faces.
+template <class PolygonMesh, class VertexPointMap, class GeomTraits>
+std::size_t coplanar_overlaps(
+    const PolygonMesh& pm, const Fill_patch<PolygonMesh>& patch,
+    const std::vector<typename boost::graph_traits<PolygonMesh>::face_descriptor>& others,
+    VertexPointMap vpm, const GeomTraits& traits) {
+  using Triangle = typename GeomTraits::Triangle_3;
+  const auto triangle = [&](auto f) {
+    const auto h = halfedge(f, pm);
+    return Triangle(get(vpm, source(h, pm)), get(vpm, target(h, pm)),
+                    get(vpm, target(next(h, pm), pm)));
+  };
+  const auto coplanar = traits.coplanar_3_object();
+  const auto do_intersect = traits.do_intersect_3_object();
+  std::size_t pairs = 0;
+  for (auto g : others) {
+    const Triangle b = triangle(g);
+    for (auto f : patch.faces) {
+      const Triangle a = triangle(f);
+      if (!CGAL::do_overlap(a.bbox(), b.bbox())) continue;
+      if (coplanar(a[0], a[1], a[2], b[0]) && coplanar(a[0], a[1], a[2], b[1]) &&
+          coplanar(a[0], a[1], a[2], b[2]) && do_intersect(a, b))
+        ++pairs;
+    }
+  }
+  return pairs;
+}
 
 /// Pairs of intersecting faces with at least one patch face, among the patch, its ring and
 /// every other face of the mesh near the patch (`cache`), by CGAL's exact `self_intersections`.
+/// Without `other_parts_are_obstacles` the patches of other parts count only where the patch
+/// lies on them.
 template <class PolygonMesh, class VertexPointMap, class GeomTraits>
 std::size_t patch_intersections_with_mesh(const PolygonMesh& pm,
                                           const Fill_patch<PolygonMesh>& patch, VertexPointMap vpm,
@@ -322,9 +357,11 @@ std::size_t patch_intersections_with_mesh(const PolygonMesh& pm,
   std::unordered_set<face_descriptor> in_range(range.begin(), range.end());
   CGAL::Bbox_3 box;
   for (face_descriptor f : patch.faces) box += cache.face_box(f);
-  const std::vector<face_descriptor> near = cache.overlapping(box, in_range);
+  std::vector<face_descriptor> other_parts_patches;
+  const std::vector<face_descriptor> near = cache.overlapping(box, in_range, &other_parts_patches);
   range.insert(range.end(), near.begin(), near.end());
-  return pairs_involving_patch(range, pm, patch, vpm, traits);
+  return pairs_involving_patch(range, pm, patch, vpm, traits) +
+         coplanar_overlaps(pm, patch, other_parts_patches, vpm, traits);
 }
 
 }  // namespace internal
