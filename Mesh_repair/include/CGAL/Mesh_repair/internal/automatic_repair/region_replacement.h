@@ -156,15 +156,17 @@ class Region_replacer {
       tie_ok[find(tie, units_of_group[k].front())] = true;
     for (std::size_t k = 0; k < groups.size(); ++k)
       if (!filled.holes[k].filled) tie_ok[find(tie, units_of_group[k].front())] = false;
-    if (max_deviation_in_border_edges > 0)
-      for (std::size_t t = 0; t < units; ++t)
-        if (tie_ok[t] &&
-            !near_removed_faces(t, tie, removed, groups, units_of_group, patches,
-                                (std::min)(max_deviation, max_deviation_in_border_edges *
-                                                              edge_length[t] / edges[t]))) {
-          tie_ok[t] = false;
-          ++report.regions_too_far;
-        }
+    for (std::size_t t = 0; t < units; ++t) {
+      const double bound =
+          (std::min)(max_deviation, max_deviation_in_border_edges > 0
+                                        ? max_deviation_in_border_edges * edge_length[t] / edges[t]
+                                        : max_deviation);
+      if (tie_ok[t] && std::isfinite(bound) &&
+          !near_removed_faces(t, tie, removed, groups, units_of_group, patches, bound)) {
+        tie_ok[t] = false;
+        ++report.regions_too_far;
+      }
+    }
     for (std::size_t k = 0; k < groups.size(); ++k) {
       const std::size_t t = find(tie, units_of_group[k].front());
       if (tie_ok[t]) {
@@ -189,9 +191,9 @@ class Region_replacer {
   }
 
   std::vector<Fill_result> fill_results;  ///< of every call, for the reports
-  /// When positive, a region is replaced only if every corner of its removed faces lies within
-  /// this many mean border edges of its holes from their patches, and within `max_deviation`:
-  /// the patch stands for the faces it replaces instead of rebuilding the surface (0: no bound).
+  /// A region is replaced only if every corner of its removed faces lies within this many mean
+  /// border edges of its holes from their patches (when positive), and within `max_deviation`:
+  /// the patch stands for the faces it replaces instead of rebuilding the surface.
   double max_deviation_in_border_edges = 0;
   double max_deviation = std::numeric_limits<double>::infinity();
 

@@ -62,6 +62,13 @@ struct Repair_options {
   Fill_options fill;
 };
 
+/// A grown hole is kept only where every corner of the faces it removed lies within two mean
+/// border edges of its patch and within 1% of the mesh's diagonal (the "nothing lost"):
+/// the folded faces of a scanned border or the lip of a tube's end (railing models: within one
+/// edge) go, while a part's shape rebuilt as a membrane does not (sweethome3d's antenna lost 15%
+/// of its area to three rings, its concept sedan had panels moved by 2.4% of the diagonal).
+constexpr double max_grown_deviation_in_border_edges = 2.0;
+constexpr double max_grown_deviation_in_diagonals = 0.01;
 /// Failed holes are grown by 1, 2, then 3 vertex rings (step_grow_failed_holes).
 constexpr int max_hole_growth_rings = 3;
 /// Holes with more border edges are not grown: growing is for the small holes of scanned
@@ -713,14 +720,6 @@ void step_grow_failed_holes(PolygonMesh& pm, VertexPointMap vpm, const GeomTrait
   }
 }
 
-/// Holes grown against other parts are replaced only where every removed face corner lies
-/// within two mean border edges of the patch and within 1% of the mesh's diagonal (the issue's
-/// "nothing lost"): the lip of a tube's end (railing models: within one edge) goes, a car
-/// body's panels rebuilt as membranes (sweethome3d's concept sedan: input points moved by 2.4%
-/// of the diagonal without the bound) do not.
-constexpr double max_deviation_against_other_parts = 2.0;
-constexpr double max_deviation_against_other_parts_in_diagonals = 0.01;
-
 /// The fill options of the retries against other parts: other parts are no obstacle, and the
 /// stuck fronts get no second budget (each hole already had one: a hole no loop of which has a
 /// valid triangulation spent it once more, 5 s each, 134 s over the 101 holes of a Debian
@@ -822,8 +821,7 @@ void step_fill_meeting_other_parts(PolygonMesh& pm, VertexPointMap vpm, const Ge
   grown.fill = other_parts_no_obstacle(options.fill);
   step_grow_failed_holes(pm, vpm, traits, grown, border_points, still_failed,
                          "failed holes grown against other parts", visitor, result,
-                         max_deviation_against_other_parts,
-                         max_deviation_against_other_parts_in_diagonals);
+                         max_grown_deviation_in_border_edges, max_grown_deviation_in_diagonals);
 }
 
 /// Fills the holes, grows the failed ones, fills what is left against other parts; returns a
@@ -854,7 +852,8 @@ std::vector<typename boost::property_traits<VertexPointMap>::value_type> step_fi
   for (const auto& group : groups) border_points.push_back(get(vpm, target(group.outer, pm)));
   if (!result.cancelled)
     step_grow_failed_holes(pm, vpm, traits, options, border_points, {}, "failed holes grown",
-                           visitor, result);
+                           visitor, result, max_grown_deviation_in_border_edges,
+                           max_grown_deviation_in_diagonals);
   // Against other parts last: a hole whose grown border leaves the other part is closed cleanly
   // by the growth; what is left meets the other part wherever it is closed.
   if (!result.cancelled && options.fill.check_self_intersections)
@@ -1173,6 +1172,7 @@ void step_remove_self_intersections(PolygonMesh& pm, VertexPointMap vpm, const G
   timer.count("regions_replaced", double(total.regions_replaced));
   timer.count("faces_removed", double(total.faces_removed));
   timer.count("faces_added", double(total.faces_added));
+  if (total.regions_too_far > 0) timer.count("patches_too_far", double(total.regions_too_far));
   timer.count("pairs_within_components_after", double(pairs.size()));
   result.self_intersections_between_components = between;
   if (total.faces_not_restored > 0) {
