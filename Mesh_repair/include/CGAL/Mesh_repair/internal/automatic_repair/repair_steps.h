@@ -733,7 +733,7 @@ inline Fill_options other_parts_no_obstacle(Fill_options fill) {
 /// The holes still open, of parts that already meet another part, are filled once more with the
 /// faces of other parts no obstacle (`Fill_options::other_parts_are_obstacles`): a tube trimmed
 /// against a post has its open end on the post's face, where every patch touches the post. The
-/// patch still may not meet its own part nor another patch; the contact between the two parts is
+/// patch still may not meet its own part nor lie on another part's patch; the contact is
 /// kept like any other (counted in the verification as `pairs_between_components_added`, listed in
 /// `kept`), and `merge_intersecting_solids` can then unite the closed parts.
 template <class PolygonMesh, class VertexPointMap, class GeomTraits, class Point>
@@ -806,7 +806,8 @@ std::vector<bool> fill_meeting_other_parts(PolygonMesh& pm, VertexPointMap vpm,
 /// `fill_meeting_other_parts`, then the holes it could not fill grown against other parts: the
 /// open end of a tube that reaches into a post, folded out into a flat lip (Debian's railing and
 /// furniture models), is closed only once the lip is gone, and then its cap lies in the post. The
-/// same rule: a patch may meet the other part, never its own part nor another patch.
+/// same rule: a patch may meet other parts and their patches, never its own part, nor lie on
+/// another part's patch in one plane.
 template <class PolygonMesh, class VertexPointMap, class GeomTraits, class Point>
 void step_fill_meeting_other_parts(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
                                    const Repair_options& options,
