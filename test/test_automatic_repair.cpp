@@ -232,12 +232,13 @@ std::size_t self_intersection_count(const Mesh& mesh) {
 
 /// A sphere where two vertices were pushed through the surface, each along a chord (the two
 /// chords do not meet) until just past the far side: each spike pierces the sphere there.
-Mesh sphere_with_spikes() {
+Mesh sphere_with_spikes(int subdivisions = 4, std::size_t count = 2) {
   Mesh mesh;
-  MR::make_sphere(mesh, Point(0, 0, 0), 1.0, 4);
+  MR::make_sphere(mesh, Point(0, 0, 0), 1.0, subdivisions);
   const std::pair<Point, Point> spikes[] = {{Point(0, 0, 1), Point(0, 0, -1.1)},
                                             {Point(0.6, 0.8, 0), Point(0.6, -0.9, 0)}};
-  for (const auto& spike : spikes) {
+  for (std::size_t i = 0; i < count; ++i) {
+    const auto& spike = spikes[i];
     Mesh::Vertex_index v = *mesh.vertices().begin();
     for (auto w : mesh.vertices())
       if (CGAL::squared_distance(mesh.point(w), spike.first) <
@@ -282,6 +283,33 @@ TEST(AutomaticRepair, SelfIntersectionsInsideAComponentAreReplacedByDefault) {
   // Not asked to remove them: the input's own self-intersections are kept, listed in `kept`.
   EXPECT_EQ(without.status(), MR::Repair_status::complete_except_kept);
   EXPECT_TRUE(without.remaining.empty()) << without.remaining.front();
+}
+
+// On a coarse part (an 80-face sphere), the rings around a spike reach most of the part:
+// replacing them would rebuild the part, not repair its defect, so the self-intersection is kept
+// and reported. The same spike on a 320-face sphere is a region of 15% of the faces, replaced
+// (`SelfIntersectionsInsideAComponentAreReplacedByDefault` has it on 5,120 faces).
+TEST(AutomaticRepair, ASelfIntersectionOfACoarsePartIsKeptRatherThanThePartRebuilt) {
+  Mesh mesh = sphere_with_spikes(1, 1);
+  const std::size_t faces = mesh.number_of_faces();
+  const std::vector<Point> points(mesh.points().begin(), mesh.points().end());
+  const std::size_t before = self_intersection_count(mesh);
+  ASSERT_GT(before, 0u);
+  const auto result = MR::automatic_repair(mesh);
+  const auto* step = find_step(result, "self-intersection removal");
+  ASSERT_NE(step, nullptr);
+  EXPECT_GT(step->count("regions_too_large"), 0.0);
+  EXPECT_EQ(step->count("faces_removed"), 0.0);
+  EXPECT_EQ(step->count("pairs_within_components_after"), double(before));
+  EXPECT_EQ(result.self_intersections_output, before);
+  EXPECT_EQ(result.status(), MR::Repair_status::incomplete);
+  // Nothing replaced: the same faces on the same points, the spike included.
+  EXPECT_EQ(mesh.number_of_faces(), faces);
+  ASSERT_EQ(mesh.number_of_vertices(), points.size());
+  std::size_t moved = 0;
+  for (auto v : mesh.vertices()) moved += mesh.point(v) != points[std::size_t(v)];
+  EXPECT_EQ(moved, 0u);
+  EXPECT_TRUE(CGAL::is_closed(mesh));
 }
 
 // An assembly of two closed solids that pass through each other: each is a solid of its own and

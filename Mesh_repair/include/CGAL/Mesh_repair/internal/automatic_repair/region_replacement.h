@@ -25,6 +25,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <memory>
 #include <map>
 #include <numeric>
 #include <unordered_map>
@@ -43,6 +44,7 @@ struct Region_replacement_report {
   std::size_t faces_added = 0;         ///< by their patches
   std::size_t faces_not_restored = 0;  ///< of failed regions, could not be put back (counted)
   std::size_t regions_too_far = 0;     ///< filled, but a patch was too far from the faces removed
+  std::size_t regions_too_large = 0;   ///< left alone: more than a set share of their part's area
   std::vector<bool> replaced;          ///< per region given, in the caller's order
 };
 
@@ -104,6 +106,7 @@ class Region_replacer {
       // and would lose it.
       if (removed[u].rim.empty()) removed[u].skipped = true;
     }
+    if (max_part_share < 1) skip_large_shares_of_parts(removed, report);
     // The opposite of every rim halfedge is a border halfedge of the unit's holes once the
     // faces are gone: it finds the holes each unit opened.
     std::unordered_map<halfedge_descriptor, std::size_t> unit_of_border;
@@ -156,13 +159,19 @@ class Region_replacer {
       tie_ok[find(tie, units_of_group[k].front())] = true;
     for (std::size_t k = 0; k < groups.size(); ++k)
       if (!filled.holes[k].filled) tie_ok[find(tie, units_of_group[k].front())] = false;
+    std::vector<Triangle> surface;
+    std::unique_ptr<Triangle_tree> tree;
     for (std::size_t t = 0; t < units; ++t) {
       const double bound =
           (std::min)(max_deviation, max_deviation_in_border_edges > 0
                                         ? max_deviation_in_border_edges * edge_length[t] / edges[t]
                                         : max_deviation);
-      if (tie_ok[t] && std::isfinite(bound) &&
-          !near_removed_faces(t, tie, removed, groups, units_of_group, patches, bound)) {
+      if (!tie_ok[t] || !std::isfinite(bound)) continue;
+      if (!tree) {
+        surface = surface_triangles();
+        tree = std::make_unique<Triangle_tree>(surface.begin(), surface.end());
+      }
+      if (!near_surface(t, tie, removed, *tree, bound)) {
         tie_ok[t] = false;
         ++report.regions_too_far;
       }
@@ -196,6 +205,12 @@ class Region_replacer {
   /// the patch stands for the faces it replaces instead of rebuilding the surface.
   double max_deviation_in_border_edges = 0;
   double max_deviation = std::numeric_limits<double>::infinity();
+  /// A region holding more than this share of both the faces and the area of the parts
+  /// (connected components) it lies in is left alone: replacing it would rebuild the part instead
+  /// of repairing it (a coarse part is within a few rings of one defect everywhere). Both, since
+  /// either alone misjudges: the long faces of a spike are a large area but a few faces, the
+  /// small faces of a fillet many faces but a small area.
+  double max_part_share = 1;
 
  private:
   /// A region as removed: its faces (corner vertices and positions), the halfedges of the kept
@@ -367,27 +382,28 @@ class Region_replacer {
     for (halfedge_descriptor island : group.islands) add(island);
   }
 
-  /// True when every corner of the faces the units of tie `t` removed lies within `bound` of the
-  /// patches of its holes.
-  bool near_removed_faces(std::size_t t, std::vector<std::size_t>& tie,
-                          const std::vector<Removed>& removed, const std::vector<Group>& groups,
-                          const std::vector<std::vector<std::size_t>>& units_of_group,
-                          const std::vector<Fill_patch<PolygonMesh>>& patches, double bound) {
-    using Triangle = typename GeomTraits::Triangle_3;
-    using Primitive =
-        CGAL::AABB_triangle_primitive<GeomTraits, typename std::vector<Triangle>::const_iterator>;
+  using Triangle = typename GeomTraits::Triangle_3;
+  using Triangle_tree = CGAL::AABB_tree<CGAL::AABB_traits<
+      GeomTraits,
+      CGAL::AABB_triangle_primitive<GeomTraits, typename std::vector<Triangle>::const_iterator>>>;
+
+  /// The triangles of the surface as it is once the holes are filled (the patches of ties that
+  /// fail later included: a slight advantage to the others), for `near_surface`.
+  std::vector<Triangle> surface_triangles() const {
     std::vector<Triangle> triangles;
-    for (std::size_t k = 0; k < groups.size(); ++k) {
-      if (find(tie, units_of_group[k].front()) != t) continue;
-      for (face_descriptor f : patches[k].faces) {
-        const halfedge_descriptor h = halfedge(f, pm_);
-        triangles.emplace_back(get(vpm_, source(h, pm_)), get(vpm_, target(h, pm_)),
-                               get(vpm_, target(next(h, pm_), pm_)));
-      }
+    for (face_descriptor f : faces(pm_)) {
+      const halfedge_descriptor h = halfedge(f, pm_);
+      const Point& p = get(vpm_, source(h, pm_));
+      for (halfedge_descriptor g = next(h, pm_); target(g, pm_) != source(h, pm_); g = next(g, pm_))
+        triangles.emplace_back(p, get(vpm_, source(g, pm_)), get(vpm_, target(g, pm_)));
     }
-    if (triangles.empty()) return true;
-    CGAL::AABB_tree<CGAL::AABB_traits<GeomTraits, Primitive>> tree(triangles.begin(),
-                                                                   triangles.end());
+    return triangles;
+  }
+
+  /// True when every corner of the faces the units of tie `t` removed lies within `bound` of the
+  /// surface (`tree`): what a reader of the output measures as the geometry kept.
+  bool near_surface(std::size_t t, std::vector<std::size_t>& tie,
+                    const std::vector<Removed>& removed, const Triangle_tree& tree, double bound) {
     const double squared_bound = bound * bound;
     for (std::size_t u = 0; u < removed.size(); ++u) {
       if (removed[u].skipped || find(tie, u) != t) continue;
@@ -396,6 +412,60 @@ class Region_replacer {
           if (CGAL::to_double(tree.squared_distance(p)) > squared_bound) return false;
     }
     return true;
+  }
+
+  double face_area(face_descriptor f) const {
+    const halfedge_descriptor h = halfedge(f, pm_);
+    const Point& p = get(vpm_, source(h, pm_));
+    double area = 0;
+    for (halfedge_descriptor g = next(h, pm_); target(g, pm_) != source(h, pm_); g = next(g, pm_))
+      area += std::sqrt(CGAL::to_double(traits_.compute_squared_area_3_object()(
+          p, get(vpm_, source(g, pm_)), get(vpm_, target(g, pm_)))));
+    return area;
+  }
+
+  /// Marks skipped (`max_part_share`) the units that hold too large a share of both the faces
+  /// and the area of the parts they lie in; parts are labelled once, linear in the mesh.
+  void skip_large_shares_of_parts(std::vector<Removed>& removed,
+                                  Region_replacement_report& report) {
+    std::unordered_map<face_descriptor, std::size_t> part;
+    std::vector<double> part_area, part_faces;
+    for (face_descriptor seed : faces(pm_)) {
+      if (!part.emplace(seed, part_area.size()).second) continue;
+      double area = 0, count = 0;
+      std::vector<face_descriptor> stack{seed};
+      while (!stack.empty()) {
+        const face_descriptor f = stack.back();
+        stack.pop_back();
+        area += face_area(f);
+        count += 1;
+        for (halfedge_descriptor h : halfedges_around_face(halfedge(f, pm_), pm_)) {
+          const halfedge_descriptor o = opposite(h, pm_);
+          if (!is_border(o, pm_) && part.emplace(face(o, pm_), part_area.size()).second)
+            stack.push_back(face(o, pm_));
+        }
+      }
+      part_area.push_back(area);
+      part_faces.push_back(count);
+    }
+    for (Removed& unit : removed) {
+      if (unit.skipped) continue;
+      std::unordered_set<std::size_t> parts;
+      double area = 0, whole_area = 0, whole_faces = 0;
+      for (face_descriptor f : unit.faces) {
+        area += face_area(f);
+        const std::size_t p = part.at(f);
+        if (parts.insert(p).second) {
+          whole_area += part_area[p];
+          whole_faces += part_faces[p];
+        }
+      }
+      if (area > max_part_share * whole_area &&
+          double(unit.faces.size()) > max_part_share * whole_faces) {
+        unit.skipped = true;
+        ++report.regions_too_large;
+      }
+    }
   }
 
   void remove_faces(Removed& unit) {

@@ -85,6 +85,11 @@ constexpr int max_self_intersection_rings = 6;
 /// Past this fraction of the faces, self-intersecting faces are not removed: the mesh is not a
 /// surface with local defects, and replacing most of it would lose its shape.
 constexpr double max_self_intersecting_face_fraction = 0.2;
+/// A region of self-intersecting faces with their rings is replaced only while it holds at most
+/// this share of the faces or of the area of its part: on a coarse part a few rings reach
+/// everywhere, and a patch over most of the part would replace the part, not its defect (a 448-face
+/// open box of which 412 faces were replaced by 38).
+constexpr double max_replaced_part_share = 0.25;
 /// A closed part that still intersects itself after region replacement is autorefined (the pieces
 /// inside its volume removed) only while the area removed from the mesh stays within this
 /// fraction of its area, and no point of the part moves farther than the next fraction of the
@@ -567,17 +572,19 @@ Region_replacement_report replace_regions(
     const std::vector<std::vector<typename boost::graph_traits<PolygonMesh>::face_descriptor>>&
         regions,
     Region_replacement_report& total, double max_deviation_in_border_edges = 0,
-    double max_deviation = std::numeric_limits<double>::infinity()) {
+    double max_deviation = std::numeric_limits<double>::infinity(), double max_part_share = 1) {
   const Fill_options fill = replacement_fill_options(options.fill);
   Region_replacer<PolygonMesh, VertexPointMap, GeomTraits> replacer(pm, vpm, traits, fill, visitor);
   replacer.max_deviation_in_border_edges = max_deviation_in_border_edges;
   replacer.max_deviation = max_deviation;
+  replacer.max_part_share = max_part_share;
   const Region_replacement_report round = replacer.replace(regions);
   total.regions_replaced += round.regions_replaced;
   total.faces_removed += round.faces_removed;
   total.faces_added += round.faces_added;
   total.faces_not_restored += round.faces_not_restored;
   total.regions_too_far += round.regions_too_far;
+  total.regions_too_large += round.regions_too_large;
   return round;
 }
 
@@ -1167,13 +1174,15 @@ void step_remove_self_intersections(PolygonMesh& pm, VertexPointMap vpm, const G
           for (vertex_descriptor v : vertices_around_face(halfedge(f, pm), pm)) seeds.push_back(v);
         regions.push_back(faces_within_rings(pm, seeds, rings));
       }
-      replace_regions(pm, vpm, traits, options, visitor, regions, total);
+      replace_regions(pm, vpm, traits, options, visitor, regions, total, 0,
+                      std::numeric_limits<double>::infinity(), max_replaced_part_share);
       pairs = within_component_pairs(between);
     }
   timer.count("regions_replaced", double(total.regions_replaced));
   timer.count("faces_removed", double(total.faces_removed));
   timer.count("faces_added", double(total.faces_added));
-  if (total.regions_too_far > 0) timer.count("patches_too_far", double(total.regions_too_far));
+  if (total.regions_too_large > 0)
+    timer.count("regions_too_large", double(total.regions_too_large));
   timer.count("pairs_within_components_after", double(pairs.size()));
   result.self_intersections_between_components = between;
   if (total.faces_not_restored > 0) {
