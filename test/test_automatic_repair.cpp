@@ -908,6 +908,54 @@ TEST(AutomaticRepair, ManySelfIntersectionsOfAScanAreAllRemoved) {
 
 // A coarse CAD mesh whose derived stitching tolerance (6% of the diagonal) would push faces
 // through their neighbours: the stitching trial must reduce or skip it.
+// Two quads crossed like the flame of a game torch (minetest's torch, written anew: each a
+// square of side 1 standing on a diagonal of the other's base) and a stick of six quads: a
+// corner of one quad lies half an edge from the other's bottom edge, within the derived
+// tolerance (half the shortest edge), and stitching it there folded the quad onto its neighbour
+// by 0.5, a third of the diagonal. The derived tolerance may move no vertex farther than 1% of
+// the diagonal, so nothing moves; a small gap elsewhere is still stitched.
+TEST(AutomaticRepair, DerivedStitchingMovesNoVertexFartherThanOnePercentOfTheDiagonal) {
+  const double r = std::sqrt(0.125), s = 0.0625;  // the torch's 0.353553 and its stick
+  Mesh mesh;
+  auto quad = [&](const Point& a, const Point& b, const Point& c, const Point& d) {
+    ASSERT_NE(mesh.add_face(mesh.add_vertex(a), mesh.add_vertex(b), mesh.add_vertex(c),
+                            mesh.add_vertex(d)),
+              Mesh::null_face());
+  };
+  quad(Point(-r, 0, r), Point(-r, 1, r), Point(r, 1, -r), Point(r, 0, -r));
+  quad(Point(-r, 0, -r), Point(r, 0, r), Point(r, 1, r), Point(-r, 1, -r));
+  // The stick: a box of six separate quads through the flame's base.
+  auto corner = [&](int x, int y, int z) { return Point(x ? s : -s, y ? 0.5625 : 0, z ? s : -s); };
+  quad(corner(0, 0, 0), corner(0, 0, 1), corner(0, 1, 1), corner(0, 1, 0));
+  quad(corner(1, 0, 0), corner(1, 1, 0), corner(1, 1, 1), corner(1, 0, 1));
+  quad(corner(0, 0, 0), corner(1, 0, 0), corner(1, 0, 1), corner(0, 0, 1));
+  quad(corner(0, 1, 0), corner(0, 1, 1), corner(1, 1, 1), corner(1, 1, 0));
+  quad(corner(0, 0, 0), corner(0, 1, 0), corner(1, 1, 0), corner(1, 0, 0));
+  quad(corner(0, 0, 1), corner(1, 0, 1), corner(1, 1, 1), corner(0, 1, 1));
+  const std::vector<Point> input(mesh.points().begin(), mesh.points().end());
+  const auto result = MR::automatic_repair(mesh);
+  const auto* stitching = find_step(result, "tolerance stitching");
+  ASSERT_NE(stitching, nullptr);
+  EXPECT_GT(stitching->count("merges_undone_by_move_limit"), 0.0);
+  EXPECT_EQ(stitching->count("max_displacement"), 0.0);
+  // Every input corner is still a vertex where it was.
+  std::set<std::array<double, 3>> output;
+  for (auto v : mesh.vertices())
+    output.insert({mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z()});
+  for (const Point& p : input) EXPECT_TRUE(output.count({p.x(), p.y(), p.z()})) << p;
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+
+  // A cube of six separately meshed faces 0.08% of the diagonal apart is still stitched closed.
+  Mesh cube = stitch_test::to_mesh(stitch_test::cube_of_separate_faces(0.001, {2, 3, 2, 3, 2, 3}));
+  const auto stitched = MR::automatic_repair(cube);
+  const auto* cube_stitching = find_step(stitched, "tolerance stitching");
+  ASSERT_NE(cube_stitching, nullptr);
+  EXPECT_GT(cube_stitching->count("node_merges"), 0.0);
+  EXPECT_EQ(cube_stitching->count("merges_undone_by_move_limit"), 0.0);
+  EXPECT_TRUE(CGAL::is_closed(cube));
+  EXPECT_TRUE(stitched.complete());
+}
+
 TEST(AutomaticRepair, StitchingNeverAddsSelfIntersectionsOnCoarseCad) {
   Mesh mesh;
   if (!read_demo_mesh("ALSTOM_TEST4.off", mesh)) GTEST_SKIP() << "libcgal-demo meshes absent";

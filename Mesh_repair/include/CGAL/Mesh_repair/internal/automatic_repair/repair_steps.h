@@ -79,6 +79,10 @@ constexpr std::size_t max_grown_hole_edges = 300;
 /// ring of long faces can be a whole tube wall or a side of a box, and rebuilding it with
 /// Liepa's fairing replaces real geometry with a membrane.
 constexpr double max_grown_face_to_border_edge = 4.0;
+/// A derived stitching tolerance moves no vertex farther than this fraction of the diagonal:
+/// what the "nothing lost" allows; past it, the merge is undone and the gap is left to
+/// hole filling.
+constexpr double max_stitching_move_in_diagonals = 0.01;
 /// Self-intersecting faces are removed with 1, 2, ... up to 6 vertex rings
 /// (step_remove_self_intersections).
 constexpr int max_self_intersection_rings = 6;
@@ -187,6 +191,7 @@ inline Stitch_settings stitch_settings(const Repair_options& options, double tol
   settings.merge_tolerance = tolerance;
   settings.merge_nodes = merge_nodes;
   settings.use_cubic_curves = options.use_cubic_curves;
+  settings.max_derived_move_in_diagonals = max_stitching_move_in_diagonals;
   return settings;
 }
 

@@ -52,6 +52,12 @@ struct Stitch_settings {
   /// Derived tolerance of a border vertex, and the most it may move: this fraction of its
   /// shortest incident edge (border or not).
   double default_tolerance_fraction = 0.5;
+  /// With a derived tolerance, no vertex moves farther than this fraction of the mesh's
+  /// bounding-box diagonal either (0: no such bound). On a model of a few large faces half the
+  /// shortest edge is a large share of the model: the crossed quads of a 16-face torch were
+  /// folded onto each other, points moved by 31% of its diagonal. Moving within the tangent
+  /// plane is no safer: that fold was within both planes.
+  double max_derived_move_in_diagonals = 0;
   bool merge_nodes = true;  ///< node pairs within tolerance (4.2); false: exactly coincident only
   bool repair_t_junctions = true;  ///< node insertion into edges (thesis 4.3)
   bool use_cubic_curves = true;    ///< T-junction nodes on the boundary curve (4.3.1)
@@ -90,6 +96,8 @@ class Gap_stitcher {
 
   Stitch_result run() {
     result_.border_edges_before = count_border_edges();
+    if (settings_.merge_tolerance < 0 && settings_.max_derived_move_in_diagonals > 0)
+      max_derived_move_ = settings_.max_derived_move_in_diagonals * mesh_bbox_diagonal(pm_, vpm_);
     collect_border_nodes();
     if (!cancelled()) pair_nodes();
     // Exactly coincident borders are glued by CGAL's `stitch_borders`, as if first: it needs two
@@ -823,13 +831,15 @@ class Gap_stitcher {
   }
 
   /// With a derived tolerance no input vertex moves farther than the tolerance fraction of its
-  /// shortest incident edge (a given tolerance is the user's bound).
+  /// shortest incident edge, nor than `max_derived_move_` (a given tolerance is the user's bound).
   bool within_move_limits(std::size_t r, const Vec3& target) const {
     if (settings_.merge_tolerance >= 0) return true;
-    for (std::size_t id = r; id != no_member; id = next_member_[id])
-      if (norm(node_original_[id] - target) >
-          settings_.default_tolerance_fraction * node_shortest_edge_[id])
+    for (std::size_t id = r; id != no_member; id = next_member_[id]) {
+      const double move = norm(target - node_original_[id]);
+      if (move > settings_.default_tolerance_fraction * node_shortest_edge_[id] ||
+          move > max_derived_move_)
         return false;
+    }
     return true;
   }
 
@@ -862,6 +872,7 @@ class Gap_stitcher {
   PolygonMesh& pm_;
   VertexPointMap vpm_;
   Stitch_settings settings_;
+  double max_derived_move_ = std::numeric_limits<double>::infinity();  ///< see Stitch_settings
   Visitor& visitor_;
   Node_id_map node_of_;
   Frozen_map frozen_;
