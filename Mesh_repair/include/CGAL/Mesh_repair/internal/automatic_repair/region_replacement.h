@@ -44,9 +44,35 @@ struct Region_replacement_report {
   std::size_t faces_added = 0;         ///< by their patches
   std::size_t faces_not_restored = 0;  ///< of failed regions, could not be put back (counted)
   std::size_t regions_too_far = 0;     ///< filled, but a patch was too far from the faces removed
-  std::size_t regions_too_large = 0;   ///< left alone: more than a set share of their part's area
-  std::vector<bool> replaced;          ///< per region given, in the caller's order
+  std::size_t regions_too_large =
+      0;                       ///< left alone: too large a share of their part's faces and area
+  std::vector<bool> replaced;  ///< per region given, in the caller's order
 };
+
+/// The connected component (by edges) of every face.
+template <class PolygonMesh>
+std::unordered_map<typename boost::graph_traits<PolygonMesh>::face_descriptor, std::size_t>
+face_components(const PolygonMesh& pm) {
+  using face_descriptor = typename boost::graph_traits<PolygonMesh>::face_descriptor;
+  std::unordered_map<face_descriptor, std::size_t> component;
+  std::size_t next = 0;
+  for (face_descriptor seed : faces(pm)) {
+    if (component.count(seed)) continue;
+    std::vector<face_descriptor> stack{seed};
+    component.emplace(seed, next);
+    while (!stack.empty()) {
+      const face_descriptor f = stack.back();
+      stack.pop_back();
+      for (auto h : halfedges_around_face(halfedge(f, pm), pm)) {
+        const auto g = face(opposite(h, pm), pm);
+        if (g != boost::graph_traits<PolygonMesh>::null_face() && component.emplace(g, next).second)
+          stack.push_back(g);
+      }
+    }
+    ++next;
+  }
+  return component;
+}
 
 /// The faces within `rings` vertex rings of `seeds` (the seeds included).
 template <class PolygonMesh>
@@ -428,25 +454,16 @@ class Region_replacer {
   /// and the area of the parts they lie in; parts are labelled once, linear in the mesh.
   void skip_large_shares_of_parts(std::vector<Removed>& removed,
                                   Region_replacement_report& report) {
-    std::unordered_map<face_descriptor, std::size_t> part;
+    const auto part = face_components(pm_);
     std::vector<double> part_area, part_faces;
-    for (face_descriptor seed : faces(pm_)) {
-      if (!part.emplace(seed, part_area.size()).second) continue;
-      double area = 0, count = 0;
-      std::vector<face_descriptor> stack{seed};
-      while (!stack.empty()) {
-        const face_descriptor f = stack.back();
-        stack.pop_back();
-        area += face_area(f);
-        count += 1;
-        for (halfedge_descriptor h : halfedges_around_face(halfedge(f, pm_), pm_)) {
-          const halfedge_descriptor o = opposite(h, pm_);
-          if (!is_border(o, pm_) && part.emplace(face(o, pm_), part_area.size()).second)
-            stack.push_back(face(o, pm_));
-        }
+    for (face_descriptor f : faces(pm_)) {
+      const std::size_t p = part.at(f);
+      if (p >= part_area.size()) {
+        part_area.resize(p + 1, 0.0);
+        part_faces.resize(p + 1, 0.0);
       }
-      part_area.push_back(area);
-      part_faces.push_back(count);
+      part_area[p] += face_area(f);
+      part_faces[p] += 1;
     }
     for (Removed& unit : removed) {
       if (unit.skipped) continue;

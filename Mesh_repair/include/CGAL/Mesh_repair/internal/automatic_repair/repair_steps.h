@@ -490,11 +490,6 @@ void step_degenerate_faces(PolygonMesh& pm, VertexPointMap vpm, Repair_result& r
   if (!all_removed) timer.step().notes.push_back("some degenerate faces could not be removed");
 }
 
-/// The connected component (by edges) of every face (defined below).
-template <class PolygonMesh>
-std::unordered_map<typename boost::graph_traits<PolygonMesh>::face_descriptor, std::size_t>
-face_components(const PolygonMesh& pm);
-
 /// Scans leave fragments of a face or a few inside their holes, attached to the hole's border
 /// at a single vertex; the soup repair and the non-manifold step split them off as components of
 /// their own. Every patch of the hole meets them, and each would stay open as the outline of a
@@ -884,31 +879,6 @@ std::vector<typename boost::property_traits<VertexPointMap>::value_type> step_fi
   if (!result.cancelled && options.fill.check_self_intersections)
     step_fill_meeting_other_parts(pm, vpm, traits, options, border_points, visitor, result);
   return border_points;
-}
-
-/// The connected component (by edges) of every face.
-template <class PolygonMesh>
-std::unordered_map<typename boost::graph_traits<PolygonMesh>::face_descriptor, std::size_t>
-face_components(const PolygonMesh& pm) {
-  using face_descriptor = typename boost::graph_traits<PolygonMesh>::face_descriptor;
-  std::unordered_map<face_descriptor, std::size_t> component;
-  std::size_t next = 0;
-  for (face_descriptor seed : faces(pm)) {
-    if (component.count(seed)) continue;
-    std::vector<face_descriptor> stack{seed};
-    component.emplace(seed, next);
-    while (!stack.empty()) {
-      const face_descriptor f = stack.back();
-      stack.pop_back();
-      for (auto h : halfedges_around_face(halfedge(f, pm), pm)) {
-        const auto g = face(opposite(h, pm), pm);
-        if (g != boost::graph_traits<PolygonMesh>::null_face() && component.emplace(g, next).second)
-          stack.push_back(g);
-      }
-    }
-    ++next;
-  }
-  return component;
 }
 
 template <class PolygonMesh>
