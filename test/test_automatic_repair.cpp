@@ -16,9 +16,11 @@
 #include "support/stitch_test_meshes.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <map>
 #include <random>
 #include <set>
 #include <string>
@@ -1021,6 +1023,128 @@ TEST(AutomaticRepair, TheOutlineOfALargeOpenSheetIsLeftOpenAndCounted) {
   EXPECT_TRUE(listed);
   EXPECT_TRUE(result.remaining.empty());
   EXPECT_EQ(result.status(), MR::Repair_status::complete_except_kept);
+}
+
+/// A 4 x 4 x 0.5 plate with a 1 x 1 through-hole, modelled as CAD models often are: both faces
+/// have the opening cut out and its wall is missing (two border cycles of 8 edges, one above
+/// the other). With `rod`, a square rod (its own closed part) passes through the opening and
+/// touches its edges, as the rings of a calendar's binding do.
+Mesh plate_with_a_bare_through_hole(bool rod = false) {
+  Mesh mesh;
+  std::map<std::array<int, 3>, Mesh::Vertex_index> at;
+  auto v = [&](int i, int j, int k) {
+    auto found = at.find({i, j, k});
+    if (found != at.end()) return found->second;
+    return at[{i, j, k}] = mesh.add_vertex(Point(-2 + 0.5 * i, -2 + 0.5 * j, 0.5 * k));
+  };
+  auto quad = [&](Mesh::Vertex_index a, Mesh::Vertex_index b, Mesh::Vertex_index c,
+                  Mesh::Vertex_index d) {
+    mesh.add_face(a, b, c);
+    mesh.add_face(a, c, d);
+  };
+  for (int i = 0; i < 8; ++i)
+    for (int j = 0; j < 8; ++j) {
+      if ((i == 3 || i == 4) && (j == 3 || j == 4)) continue;  // the opening
+      quad(v(i, j, 1), v(i + 1, j, 1), v(i + 1, j + 1, 1), v(i, j + 1, 1));
+      quad(v(i, j + 1, 0), v(i + 1, j + 1, 0), v(i + 1, j, 0), v(i, j, 0));
+    }
+  for (int t = 0; t < 8; ++t) {  // the outer walls
+    quad(v(t, 0, 0), v(t + 1, 0, 0), v(t + 1, 0, 1), v(t, 0, 1));
+    quad(v(8, t, 0), v(8, t + 1, 0), v(8, t + 1, 1), v(8, t, 1));
+    quad(v(t + 1, 8, 0), v(t, 8, 0), v(t, 8, 1), v(t + 1, 8, 1));
+    quad(v(0, t + 1, 0), v(0, t, 0), v(0, t, 1), v(0, t + 1, 1));
+  }
+  // A box 0.4 wide in x, 0.8 in y (reaching y = +-0.4 inside the opening's +-0.5) and from
+  // x = 0.3 to 0.7: it crosses the opening's wall at x = 0.5.
+  if (!rod) return mesh;
+  std::array<Mesh::Vertex_index, 8> c;  // corner x + 2y + 4z of the box
+  for (int k = 0; k < 8; ++k)
+    c[k] = mesh.add_vertex(Point(k & 1 ? 0.7 : 0.3, k & 2 ? 0.4 : -0.4, k & 4 ? 1.5 : -1.0));
+  quad(c[0], c[2], c[3], c[1]);
+  quad(c[4], c[5], c[7], c[6]);
+  quad(c[0], c[4], c[6], c[2]);
+  quad(c[1], c[3], c[7], c[5]);
+  quad(c[0], c[1], c[5], c[4]);
+  quad(c[2], c[6], c[7], c[3]);
+  return mesh;
+}
+
+/// Euler characteristic V - E + F: 2 for a sphere, 0 for a torus (a plate with one opening).
+long euler_characteristic(const Mesh& mesh) {
+  return long(num_vertices(mesh)) - long(num_edges(mesh)) + long(num_faces(mesh));
+}
+
+TEST(AutomaticRepair, AThroughHoleWithoutItsWallGetsTheWallNotTwoCaps) {
+  Mesh mesh = plate_with_a_bare_through_hole();
+  ASSERT_EQ(count_border_cycles(mesh), 2u);
+  const std::size_t faces_before = num_faces(mesh);
+  const MR::Repair_result result = MR::automatic_repair(mesh);
+  const MR::Repair_step_report* step = find_step(result, "through holes bridged");
+  ASSERT_NE(step, nullptr);
+  EXPECT_EQ(step->count("tubes_added"), 1.0);
+  EXPECT_EQ(step->count("faces_added"), 16.0);  // two triangles per edge of the opening
+  EXPECT_EQ(result.holes.holes.size(), 0u);     // nothing was left for the hole filling
+  EXPECT_EQ(num_faces(mesh), faces_before + 16);
+  EXPECT_EQ(count_border_cycles(mesh), 0u);
+  EXPECT_EQ(euler_characteristic(mesh), 0);  // the opening is still there: a torus
+  EXPECT_FALSE(support::does_self_intersect(mesh));
+  EXPECT_GT(CGAL::Polygon_mesh_processing::volume(mesh), 0.0);
+  EXPECT_EQ(result.status(), MR::Repair_status::complete);
+}
+
+TEST(AutomaticRepair, AThroughHoleIsCappedWhenBridgingIsOff) {
+  Mesh mesh = plate_with_a_bare_through_hole();
+  const MR::Repair_result result =
+      MR::automatic_repair(mesh, MR::parameters::bridge_through_holes(false));
+  EXPECT_EQ(find_step(result, "through holes bridged"), nullptr);
+  EXPECT_EQ(result.holes.filled, 2u);
+  EXPECT_EQ(count_border_cycles(mesh), 0u);
+  EXPECT_EQ(euler_characteristic(mesh), 2);
+}
+
+TEST(AutomaticRepair, AThroughHoleWithARodTouchingItsEdgesGetsItsWallAndKeepsTheContact) {
+  Mesh mesh = plate_with_a_bare_through_hole(true);
+  const std::size_t pairs_before = self_intersection_count(mesh);
+  ASSERT_GT(pairs_before, 0u);  // the rod crosses the plate's faces at the opening's edge
+  const MR::Repair_result result = MR::automatic_repair(mesh);
+  const MR::Repair_step_report* step = find_step(result, "through holes bridged");
+  ASSERT_NE(step, nullptr);
+  EXPECT_EQ(step->count("tubes_added"), 1.0);
+  EXPECT_EQ(count_border_cycles(mesh), 0u);
+  EXPECT_EQ(support::connected_components(mesh), 2u);
+  // Only contacts between the plate and the rod: the wall meets the rod, nothing else.
+  EXPECT_GT(self_intersection_count(mesh), pairs_before);
+  EXPECT_EQ(result.status(), MR::Repair_status::complete_except_kept);
+}
+
+TEST(AutomaticRepair, AnOpenSleeveIsCappedNotLinedFromInside) {
+  // A barrel-shaped band, open at both ends: its two end circles are translated copies running in
+  // opposite directions, as a through-hole's, but its faces run from one end to the other. A
+  // straight tube between the ends would line the barrel without meeting it.
+  Mesh mesh;
+  const int sides = 24, rings = 8;
+  std::vector<std::vector<Mesh::Vertex_index>> ring(rings + 1);
+  for (int k = 0; k <= rings; ++k) {
+    const double z = double(k) / rings, r = 1 + 0.3 * std::sin(CGAL_PI * z);
+    for (int i = 0; i < sides; ++i) {
+      const double a = 2 * CGAL_PI * i / sides;
+      ring[k].push_back(mesh.add_vertex(Point(r * std::cos(a), r * std::sin(a), z)));
+    }
+  }
+  for (int k = 0; k < rings; ++k)
+    for (int i = 0; i < sides; ++i) {
+      const int j = (i + 1) % sides;
+      mesh.add_face(ring[k][i], ring[k][j], ring[k + 1][j]);
+      mesh.add_face(ring[k][i], ring[k + 1][j], ring[k + 1][i]);
+    }
+  ASSERT_EQ(count_border_cycles(mesh), 2u);
+  const MR::Repair_result result = MR::automatic_repair(mesh);
+  const MR::Repair_step_report* step = find_step(result, "through holes bridged");
+  ASSERT_NE(step, nullptr);
+  EXPECT_EQ(step->count("matching_pairs"), 0.0);
+  EXPECT_EQ(result.holes.filled, 2u);
+  EXPECT_EQ(euler_characteristic(mesh), 2);
+  EXPECT_EQ(count_border_cycles(mesh), 0u);
 }
 
 }  // namespace

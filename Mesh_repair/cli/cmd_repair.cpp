@@ -49,6 +49,8 @@ const char* const repair_help =
     "  --largest-component      keep only the largest component (removed ones are counted)\n"
     "  --keep-fragments         keep the small open fragments found in holes (by default they\n"
     "                           are removed before filling, and counted)\n"
+    "  --no-through-holes       cap both ends of a through-hole whose wall is missing (by\n"
+    "                           default a tube joins the two ends, and is counted)\n"
     "  --no-ring-holes          fill islands and their hole separately\n"
     "  --no-self-intersections  neither count nor remove self-intersections (faster)\n"
     "  --keep-self-intersections  keep the input's self-intersections (default: the faces\n"
@@ -80,6 +82,7 @@ namespace {
 
 const std::set<std::string> repair_flags = {"--keep-components",
                                             "--keep-fragments",
+                                            "--no-through-holes",
                                             "--largest-component",
                                             "--no-ring-holes",
                                             "--no-self-intersections",
@@ -259,6 +262,7 @@ int repair_one(const Arguments& args) {
                 .sheet_border_ratio(sheet_border_ratio(args))
                 .keep_largest_component(args.has("--largest-component"))
                 .remove_hole_fragments(!args.has("--keep-fragments"))
+                .bridge_through_holes(!args.has("--no-through-holes"))
                 .detect_ring_holes(!args.has("--no-ring-holes"))
                 .detect_self_intersections(!args.has("--no-self-intersections"))
                 .repair_self_intersections(!args.has("--keep-self-intersections") &&

@@ -102,6 +102,7 @@ struct Repair_options {
   bool remove_self_intersections = true;
   bool merge_intersecting_solids = false;
   bool remove_hole_fragments = true;
+  bool bridge_through_holes = true;
   int threads = 0;
   unsigned seed = 0;
 };

@@ -366,6 +366,7 @@ PYBIND11_MODULE(_core, m) {
         .get("remove_self_intersections", o.remove_self_intersections)
         .get("merge_intersecting_solids", o.merge_intersecting_solids)
         .get("remove_hole_fragments", o.remove_hole_fragments)
+        .get("bridge_through_holes", o.bridge_through_holes)
         .get("threads", o.threads)
         .get("seed", o.seed)
         .finish();

@@ -479,3 +479,54 @@ def test_a_fragment_in_a_hole_is_removed_unless_kept():
     assert border_cycles(result.vertices, result.faces) == 0
     kept = mesh_repair.repair(v, f, remove_hole_fragments=False).report["repair"]
     assert "fragments in holes" not in {s["name"] for s in kept["steps"]}
+
+
+def plate_with_a_bare_through_hole():
+    """A 4 x 4 x 0.5 plate whose 1 x 1 opening has both faces cut out and no wall."""
+    index = {}
+    vertices, faces = [], []
+
+    def v(i, j, k):
+        if (i, j, k) not in index:
+            index[(i, j, k)] = len(vertices)
+            vertices.append([-2 + 0.5 * i, -2 + 0.5 * j, 0.5 * k])
+        return index[(i, j, k)]
+
+    def quad(a, b, c, d):
+        faces.extend([[a, b, c], [a, c, d]])
+
+    for i in range(8):
+        for j in range(8):
+            if i in (3, 4) and j in (3, 4):
+                continue
+            quad(v(i, j, 1), v(i + 1, j, 1), v(i + 1, j + 1, 1), v(i, j + 1, 1))
+            quad(v(i, j + 1, 0), v(i + 1, j + 1, 0), v(i + 1, j, 0), v(i, j, 0))
+    for t in range(8):
+        quad(v(t, 0, 0), v(t + 1, 0, 0), v(t + 1, 0, 1), v(t, 0, 1))
+        quad(v(8, t, 0), v(8, t + 1, 0), v(8, t + 1, 1), v(8, t, 1))
+        quad(v(t + 1, 8, 0), v(t, 8, 0), v(t, 8, 1), v(t + 1, 8, 1))
+        quad(v(0, t + 1, 0), v(0, t, 0), v(0, t, 1), v(0, t + 1, 1))
+    return np.array(vertices, dtype=float), np.array(faces, dtype=np.int64)
+
+
+def euler_characteristic(vertices, faces):
+    edges = {tuple(sorted(e)) for a, b, c in faces for e in ((a, b), (b, c), (c, a))}
+    used = {int(i) for f in faces for i in f}
+    return len(used) - len(edges) + len(faces)
+
+
+def test_a_through_hole_gets_its_wall_unless_bridging_is_off():
+    v, f = plate_with_a_bare_through_hole()
+    assert border_cycles(v, f) == 2
+    result = mesh_repair.repair(v, f)
+    repair = result.report["repair"]
+    assert repair["status"] == "complete", repair["remaining"]
+    steps = {s["name"]: s for s in repair["steps"]}
+    assert steps["through holes bridged"]["counts"]["tubes_added"] == 1
+    assert steps["through holes bridged"]["counts"]["faces_added"] == 16
+    assert border_cycles(result.vertices, result.faces) == 0
+    assert euler_characteristic(result.vertices, result.faces) == 0  # the opening stays open
+    capped = mesh_repair.repair(v, f, bridge_through_holes=False)
+    assert "through holes bridged" not in {s["name"] for s in capped.report["repair"]["steps"]}
+    assert border_cycles(capped.vertices, capped.faces) == 0
+    assert euler_characteristic(capped.vertices, capped.faces) == 2

@@ -40,6 +40,8 @@ Repair_options repair_options_from(const PolygonMesh& pm, const NamedParameters&
       get_parameter(np, internal_np::merge_intersecting_solids_t{}), o.merge_intersecting_solids);
   o.remove_hole_fragments = choose_parameter(
       get_parameter(np, internal_np::remove_hole_fragments_t{}), o.remove_hole_fragments);
+  o.bridge_through_holes = choose_parameter(
+      get_parameter(np, internal_np::bridge_through_holes_t{}), o.bridge_through_holes);
   o.fill = fill_options_from(np);
   return o;
 }
@@ -134,6 +136,17 @@ Repair_options repair_options_from(const PolygonMesh& pm, const NamedParameters&
 ///       attached at a vertex to the border of one of that part's holes (every patch of the hole
 ///       would meet them, and they would stay open). Counted in the step "fragments in holes";
 ///       closed components are never removed. Doc: automatic_repair.md, "Fragments in holes"}
+///     \cgalParamType{bool}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{bridge_through_holes}
+///     \cgalParamDescription{before the holes are filled, give the through-holes of a part whose
+///       wall is missing their wall: two border cycles of one part that are translated copies of
+///       each other (at most 2 radii apart, along their axis, running in opposite directions, the
+///       faces along them not leaning toward each other) are joined by a tube of 2 triangles per
+///       edge, kept only if no face of it meets another face (exact predicates; faces of other
+///       parts may be met when the part already met another part). Counted in the step "through
+///       holes bridged". Doc: automatic_repair.md, "Through-holes"}
 ///     \cgalParamType{bool}
 ///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd

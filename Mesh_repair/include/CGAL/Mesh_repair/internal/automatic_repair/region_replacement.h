@@ -12,6 +12,7 @@
 // here with the exact patch checks of fill_holes).
 
 #include <CGAL/Mesh_repair/fill_holes.h>
+#include <CGAL/Mesh_repair/internal/bounded_pairs.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/border_cycles.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/patch_check.h>
 
@@ -72,6 +73,29 @@ face_components(const PolygonMesh& pm) {
     ++next;
   }
   return component;
+}
+
+/// The parts (components of `component`) a face of which meets a face of another part (exact
+/// predicates, bounded enumeration), the faces of `skipped` left out.
+template <class PolygonMesh, class VertexPointMap, class GeomTraits, class FaceComponents,
+          class FaceSet>
+std::unordered_set<std::size_t> parts_in_contact(const PolygonMesh& pm, VertexPointMap vpm,
+                                                 const GeomTraits& traits,
+                                                 const FaceComponents& component,
+                                                 const FaceSet& skipped) {
+  std::vector<typename boost::graph_traits<PolygonMesh>::face_descriptor> range;
+  for (auto f : faces(pm))
+    if (!skipped.count(f)) range.push_back(f);
+  std::unordered_set<std::size_t> parts;
+  const auto found =
+      Bounded_face_intersections<PolygonMesh, VertexPointMap, GeomTraits>(pm, vpm, traits)
+          .find(range, nullptr, default_pair_limit(range.size()));
+  for (const auto& pair : found.pairs)
+    if (component.at(pair.first) != component.at(pair.second)) {
+      parts.insert(component.at(pair.first));
+      parts.insert(component.at(pair.second));
+    }
+  return parts;
 }
 
 /// The faces within `rings` vertex rings of `seeds` (the seeds included).

@@ -9,6 +9,7 @@
 #include <CGAL/Mesh_repair/internal/automatic_repair/region_replacement.h>
 #include <CGAL/Mesh_repair/internal/automatic_repair/self_union.h>
 #include <CGAL/Mesh_repair/internal/automatic_repair/solid_union.h>
+#include <CGAL/Mesh_repair/internal/automatic_repair/through_holes.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/border_cycles.h>
 #include <CGAL/Mesh_repair/internal/mesh_counts.h>
 #include <CGAL/Mesh_repair/internal/stitching/run_gap_stitcher.h>
@@ -59,6 +60,7 @@ struct Repair_options {
   bool repair_self_intersections = true;
   bool merge_intersecting_solids = false;
   bool remove_hole_fragments = true;
+  bool bridge_through_holes = true;
   Fill_options fill;
 };
 
@@ -550,6 +552,23 @@ void step_remove_hole_fragments(PolygonMesh& pm, VertexPointMap vpm, const Repai
   timer.count("vertices_removed", double(vertices_before) - double(count_vertices(pm)));
 }
 
+/// Step 9c: the through-holes of a part whose wall is missing get it, before any cap is tried
+/// (internal/automatic_repair/through_holes.h).
+template <class PolygonMesh, class VertexPointMap, class GeomTraits>
+void step_bridge_through_holes(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
+                               Any_visitor visitor, Repair_result& result) {
+  if (border_cycles(pm).size() < 2) return;
+  Step_timer timer(result, "through holes bridged", visitor);
+  const std::size_t vertices_before = count_vertices(pm);
+  const Through_hole_report report = bridge_through_holes(pm, vpm, traits);
+  CGAL_assertion(count_vertices(pm) == vertices_before);
+  CGAL_USE(vertices_before);
+  timer.count("matching_pairs", double(report.pairs));
+  timer.count("tubes_added", double(report.bridged));
+  timer.count("tubes_rejected", double(report.rejected));
+  timer.count("faces_added", double(report.faces_added));
+}
+
 template <class PolygonMesh>
 void step_largest_component(PolygonMesh& pm, Repair_result& result, Any_visitor visitor) {
   Step_timer timer(result, "largest component", visitor);
@@ -769,11 +788,9 @@ std::vector<bool> fill_meeting_other_parts(PolygonMesh& pm, VertexPointMap vpm,
   const bool one_part = std::all_of(component.begin(), component.end(),
                                     [](const auto& entry) { return entry.second == 0; });
   if (one_part) return still_failed;
-  const auto pairs = bounded_self_intersections(pm).pairs;
-  std::unordered_set<std::size_t> in_contact;
-  for (const auto& pair : pairs)
-    if (component.at(pair.first) != component.at(pair.second))
-      in_contact.insert({component.at(pair.first), component.at(pair.second)});
+  const std::unordered_set<std::size_t> in_contact = parts_in_contact(
+      pm, vpm, traits, component,
+      std::unordered_set<typename boost::graph_traits<PolygonMesh>::face_descriptor>{});
   const auto groups = hole_groups(pm, vpm, options.fill.detect_ring_holes);
   std::vector<typename decltype(groups)::value_type> retried;
   std::vector<std::size_t> hole_of;
@@ -1403,6 +1420,8 @@ Repair_result run_repair_pipeline(PolygonMesh& pm, VertexPointMap vpm, const Geo
     step_largest_component(pm, result, visitor);
   if (!result.cancelled && options.remove_hole_fragments)
     step_remove_hole_fragments(pm, vpm, options, visitor, result);
+  if (!result.cancelled && options.bridge_through_holes)
+    step_bridge_through_holes(pm, vpm, traits, visitor, result);
   std::vector<typename boost::property_traits<VertexPointMap>::value_type> hole_points;
   if (!result.cancelled) hole_points = step_fill_holes(pm, vpm, traits, options, visitor, result);
   if (!result.cancelled && options.repair_self_intersections)
