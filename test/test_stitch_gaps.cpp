@@ -3,6 +3,7 @@
 #include "support/cgal_calls.h"
 #include "support/stitch_test_meshes.h"
 
+#include <CGAL/Mesh_repair/generators.h>
 #include <CGAL/Mesh_repair/remove_overlaps.h>
 #include <CGAL/Mesh_repair/stitch_gaps.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
@@ -309,6 +310,46 @@ TEST(StitchGaps, NodesAlongOneBorderSideAreNotMergedEvenWithALargeTolerance) {
   EXPECT_EQ(border_cycle_count(sheet), 1u);
   EXPECT_NEAR(PMP::area(sheet), area_before, 1e-9);
   EXPECT_FALSE(self_intersects(sheet));
+}
+
+std::size_t border_edge_count(const Mesh& mesh) {
+  std::size_t count = 0;
+  for (halfedge_descriptor h : halfedges(mesh)) count += is_border(h, mesh);
+  return count;
+}
+
+// A crack wider than the edges along it (a sphere of 5,120 faces cut across, the sides 0.07
+// apart, every third border edge split), stitched with twice the gap: merging nodes whose
+// partners lie along the seam pushes faces through their neighbours. With
+// `check_self_intersections` the vertices of those faces are left unstitched and nothing
+// intersects, while the rest of the seam is still stitched.
+TEST(StitchGaps, ACheckedStitchAcrossAWideCrackAddsNoSelfIntersection) {
+  Mesh sphere;
+  MR::make_sphere(sphere, Point(0, 0, 0), 1.0, 4);
+  const Vector normal = Vector(0.3, -0.5, 0.8) / std::sqrt(0.98);
+  const double gap = 0.07;
+  Mesh cracked = to_mesh(crack_across(sphere, normal, gap));
+  ASSERT_GT(split_border_edges(cracked, 3), 0u);
+  ASSERT_FALSE(self_intersects(cracked));
+  const std::size_t border_before = border_edge_count(cracked);
+
+  Mesh unchecked = cracked;
+  MR::stitch_gaps(unchecked, MR::parameters::merge_tolerance(2 * gap));
+  ASSERT_TRUE(self_intersects(unchecked)) << "the case no longer needs the check";
+
+  const MR::Stitch_result result = MR::stitch_gaps(
+      cracked, MR::parameters::merge_tolerance(2 * gap).check_self_intersections(true));
+  EXPECT_TRUE(result.valid);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(cracked));
+  EXPECT_FALSE(self_intersects(cracked));
+  EXPECT_FALSE(result.check_failed);
+  EXPECT_GT(result.frozen_vertices, 0u);
+  EXPECT_GT(result.self_intersections_avoided, 0u);
+  EXPECT_GE(result.self_intersection_rounds, 2u);
+  EXPECT_GT(result.node_merges, 0u);
+  // The frozen vertices stay open; the rest of the seam is stitched (283 border edges -> 185).
+  EXPECT_LT(border_edge_count(cracked), border_before * 3 / 4);
+  EXPECT_GE(border_edge_count(cracked), border_edge_count(unchecked));
 }
 
 /// Pairs of border halfedges whose end points coincide in opposite directions, each halfedge in

@@ -18,10 +18,13 @@ namespace mesh_repair_cli {
 
 const char* const stitch_help =
     "usage: mesh_repair stitch IN -o OUT [--tolerance X | --tolerance-rel F] [--no-curves]\n"
-    "                         [--report R.json] [--quiet]\n"
+    "                         [--allow-self-intersections] [--report R.json] [--quiet]\n"
     "  Merges border nodes closer than the tolerance (X in model units, F a fraction of the\n"
     "  bounding-box diagonal; default: half the shortest border edge at each node), splits\n"
     "  border edges at nodes within tolerance of them (T-junctions) and glues the seams.\n"
+    "  Stitching that would make faces intersect is first tried on a copy: the vertices of\n"
+    "  those faces are left unstitched (counted as frozen); --allow-self-intersections skips\n"
+    "  that check.\n"
     "  --no-curves places T-junction nodes on the chord instead of the cubic boundary curve.\n"
     "  Exit status 1 when border edges remain.\n";
 
@@ -37,7 +40,7 @@ std::size_t border_cycles(const Mesh& mesh) {
 
 int run_stitch(const std::vector<std::string>& args) {
   namespace MR = CGAL::Mesh_repair;
-  Arguments arguments(args, {"--no-curves", "--quiet"},
+  Arguments arguments(args, {"--no-curves", "--allow-self-intersections", "--quiet"},
                       {"-o", "--tolerance", "--tolerance-rel", "--report"});
   const std::string input = arguments.single_input(stitch_help);
   const std::string output = arguments.get("-o");
@@ -51,10 +54,11 @@ int run_stitch(const std::vector<std::string>& args) {
 
   Progress_bar bar(progress_wanted(arguments));
   const auto start = std::chrono::steady_clock::now();
-  const MR::Stitch_result result =
-      MR::stitch_gaps(mesh, MR::parameters::merge_tolerance(tolerance)
-                                .use_cubic_curves(!arguments.has("--no-curves"))
-                                .visitor(std::ref(bar)));
+  const MR::Stitch_result result = MR::stitch_gaps(
+      mesh, MR::parameters::merge_tolerance(tolerance)
+                .use_cubic_curves(!arguments.has("--no-curves"))
+                .check_self_intersections(!arguments.has("--allow-self-intersections"))
+                .visitor(std::ref(bar)));
   const double seconds = seconds_since(start);
   const std::size_t cycles_after = border_cycles(mesh);
   save_mesh(output, mesh);
@@ -67,6 +71,12 @@ int run_stitch(const std::vector<std::string>& args) {
               << cycles_before << " -> " << cycles_after << ", max move " << result.max_displacement
               << " (" << result.max_move_to_shortest_edge << " of the shortest incident edge), "
               << seconds << " s\n";
+    if (result.frozen_vertices > 0)
+      std::cout << "  " << result.frozen_vertices
+                << " vertices left unstitched: stitching them made faces intersect ("
+                << result.self_intersections_avoided << " pairs on the first try)\n";
+    if (result.check_failed)
+      std::cout << "  nothing stitched: every try made faces intersect; the mesh is unchanged\n";
   }
   if (arguments.has("--report")) {
     std::ostringstream text;

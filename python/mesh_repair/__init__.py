@@ -288,12 +288,17 @@ def fill_holes(vertices, faces=None, *, method="self_validated", continuity=1,
 
 
 def stitch(vertices, faces=None, *, tolerance=None, tolerance_rel=None, curves=True,
-           progress=None):
+           check_self_intersections=True, progress=None):
     """Closes gaps, small overlaps and T-junctions within a tolerance (``mesh_repair stitch``;
     default tolerance: half the shortest border edge at each node). ``curves=False`` puts
-    T-junction nodes on the chord instead of the cubic boundary curve. Returns a ``Result``;
-    the report holds the border cycles before and after and ``stitch``."""
-    options = _tolerance({"curves": bool(curves)}, tolerance, tolerance_rel)
+    T-junction nodes on the chord instead of the cubic boundary curve. Stitching that would make
+    faces intersect is left undone (the vertices of those faces are frozen, counted in the
+    report's ``stitch.frozen_vertices``); ``check_self_intersections=False`` skips that check
+    (``--allow-self-intersections``). Returns a ``Result``; the report holds the border cycles
+    before and after and ``stitch``."""
+    options = _tolerance({"curves": bool(curves),
+                          "check_self_intersections": bool(check_self_intersections)},
+                         tolerance, tolerance_rel)
     return _result(_core.stitch(_source(vertices, faces), options, _progress(progress)))
 
 

@@ -119,6 +119,7 @@ struct Fill_options {
 struct Stitch_options {
   double tolerance = -1, tolerance_rel = -1;
   bool curves = true;
+  bool check_self_intersections = true;
 };
 struct Sliver_options {
   double shape_factor = 0.7, feature_angle = 135, edge_length = -1;

@@ -394,6 +394,7 @@ PYBIND11_MODULE(_core, m) {
         .get("tolerance", o.tolerance)
         .get("tolerance_rel", o.tolerance_rel)
         .get("curves", o.curves)
+        .get("check_self_intersections", o.check_self_intersections)
         .finish();
     return run(source, progress,
                [&](Mesh_input& in, Python_visitor& v) { return stitch(in, o, v); });

@@ -357,6 +357,7 @@ Operator_output stitch(Mesh_input& input, const Stitch_options& options, Python_
       mesh,
       MR::parameters::merge_tolerance(tolerance(options.tolerance, options.tolerance_rel, mesh))
           .use_cubic_curves(options.curves)
+          .check_self_intersections(options.check_self_intersections)
           .visitor(std::ref(visitor)));
   const double seconds = seconds_since(start);
   throw_if_cancelled(visitor);

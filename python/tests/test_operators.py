@@ -97,6 +97,25 @@ def test_stitch_closes_a_gap_between_two_hemispheres():
     assert border_cycles(result.vertices, result.faces) == 0
 
 
+def test_stitch_across_a_wide_crack_adds_no_self_intersection():
+    v, f = icosphere(4)
+    # A crack wider than the edges (0.075): the faces above a tilted plane get their own copy of
+    # every vertex, moved by 0.1 along the plane's normal, and the stitch tolerance is twice that.
+    normal = np.array([0.3, -0.5, 0.8]) / np.sqrt(0.98)
+    upper = v[f].mean(axis=1) @ normal > 0
+    f2 = f.copy()
+    f2[upper] += len(v)
+    v2 = np.vstack([v, v + 0.1 * normal])
+    unchecked = mesh_repair.stitch(v2, f2, tolerance=0.2, check_self_intersections=False)
+    assert mesh_repair.check(unchecked.vertices, unchecked.faces)["self_intersections"] > 0
+    checked = mesh_repair.stitch(v2, f2, tolerance=0.2)
+    assert checked.report["stitch"]["frozen_vertices"] > 0
+    assert checked.report["stitch"]["check_failed"] is False
+    assert mesh_repair.check(checked.vertices, checked.faces)["self_intersections"] == 0
+    assert checked.report["border_cycles_before"] == 2
+    assert checked.report["stitch"]["edges_stitched"] > 0
+
+
 def test_remove_slivers_keeps_a_valid_closed_mesh():
     v, f = icosphere(3)
     v = v.copy()

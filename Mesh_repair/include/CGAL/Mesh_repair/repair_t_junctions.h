@@ -7,7 +7,7 @@
 /// T-junction repair by node insertion and element splitting (thesis 4.3, Figures 4.4-4.6).
 /// See doc/repair_t_junctions.md.
 
-#include <CGAL/Mesh_repair/internal/stitching/run_gap_stitcher.h>
+#include <CGAL/Mesh_repair/internal/stitching/stitching_trial.h>
 #include <CGAL/Mesh_repair/parameters.h>
 
 namespace CGAL {
@@ -57,7 +57,7 @@ Stitch_result repair_t_junctions(PolygonMesh& pm,
   settings.merge_nodes = false;
   settings.use_cubic_curves = parameters::choose_parameter(
       parameters::get_parameter(np, internal_np::use_cubic_curves_t{}), true);
-  return internal::run_gap_stitcher(pm, settings, np);
+  return internal::run_gap_stitcher(pm, settings, np, false);
 }
 
 }  // namespace Mesh_repair

@@ -7,7 +7,7 @@
 /// Closing of small gaps and overlaps between border strips by merging free nodes (thesis 4.2),
 /// with T-junction repair (4.3) and cubic boundary curves (4.3.1). See doc/stitch_gaps.md.
 
-#include <CGAL/Mesh_repair/internal/stitching/run_gap_stitcher.h>
+#include <CGAL/Mesh_repair/internal/stitching/stitching_trial.h>
 #include <CGAL/Mesh_repair/parameters.h>
 #include <CGAL/Mesh_repair/visitor.h>
 
@@ -56,6 +56,17 @@ namespace Mesh_repair {
 ///     \cgalParamType{bool}
 ///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{check_self_intersections}
+///     \cgalParamDescription{stitch a copy first and, while it has more self-intersecting face
+///                           pairs than `pm`, freeze the vertices of the faces that intersect
+///                           (they neither move nor take T-junction nodes) and try again, up to
+///                           8 rounds; then stitch `pm` leaving the frozen vertices alone. When
+///                           no round adds nothing, `pm` is left unchanged
+///                           (`Stitch_result::check_failed`). Costs a self-intersection pass
+///                           per round}
+///     \cgalParamType{bool}
+///     \cgalParamDefault{`false` (the command line's `stitch` sets it)}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_point_map}
 ///     \cgalParamDefault{`boost::get(CGAL::vertex_point, pm)`}
 ///   \cgalParamNEnd
@@ -75,7 +86,10 @@ Stitch_result stitch_gaps(PolygonMesh& pm,
   settings.merge_tolerance = internal::absolute_tolerance(pm, np);
   settings.use_cubic_curves = parameters::choose_parameter(
       parameters::get_parameter(np, internal_np::use_cubic_curves_t{}), true);
-  return internal::run_gap_stitcher(pm, settings, np);
+  return internal::run_gap_stitcher(
+      pm, settings, np,
+      parameters::choose_parameter(
+          parameters::get_parameter(np, internal_np::check_self_intersections_t{}), false));
 }
 
 }  // namespace Mesh_repair

@@ -33,7 +33,14 @@ struct Stitch_result {
   std::size_t unstitched_clusters = 0;          ///< merged nodes whose borders could not be glued
   std::size_t unglued_nodes_restored = 0;       ///< of those, nodes put back where they were
   std::size_t merges_undone_by_move_limit = 0;  ///< clusters whose merge point was too far
-  double max_displacement = 0;                  ///< largest vertex move
+  /// With `check_self_intersections`: the stitchings tried on copies, the vertices left alone
+  /// because stitching them made faces intersect, the pairs the first try would have added, and
+  /// whether every try added some (the mesh is then unchanged).
+  std::size_t self_intersection_rounds = 0;
+  std::size_t frozen_vertices = 0;
+  std::size_t self_intersections_avoided = 0;
+  bool check_failed = false;
+  double max_displacement = 0;  ///< largest vertex move
   /// Largest move of an input vertex divided by its shortest incident edge (at most
   /// `default_tolerance_fraction`, 0.5, with a derived tolerance).
   double max_move_to_shortest_edge = 0;
@@ -73,6 +80,10 @@ inline void write_json(Json_writer& json, const Stitch_result& r) {
       .field("unstitched_clusters", r.unstitched_clusters)
       .field("unglued_nodes_restored", r.unglued_nodes_restored)
       .field("merges_undone_by_move_limit", r.merges_undone_by_move_limit)
+      .field("self_intersection_rounds", r.self_intersection_rounds)
+      .field("frozen_vertices", r.frozen_vertices)
+      .field("self_intersections_avoided", r.self_intersections_avoided)
+      .field("check_failed", r.check_failed)
       .field("max_displacement", r.max_displacement)
       .field("max_move_to_shortest_edge", r.max_move_to_shortest_edge)
       .field("cancelled", r.cancelled)

@@ -13,6 +13,7 @@
 #include <CGAL/Mesh_repair/internal/hole_filling/border_cycles.h>
 #include <CGAL/Mesh_repair/internal/mesh_counts.h>
 #include <CGAL/Mesh_repair/internal/stitching/run_gap_stitcher.h>
+#include <CGAL/Mesh_repair/internal/stitching/stitching_trial.h>
 #include <CGAL/Mesh_repair/repair_result.h>
 #include <CGAL/Mesh_repair/visitor.h>
 
@@ -204,85 +205,6 @@ inline Stitch_settings stitch_settings(const Repair_options& options, double tol
   return settings;
 }
 
-/// Stitches gaps then T-junctions with `tolerance` (negative: derived from the local edge
-/// lengths by stitch_gaps), leaving `frozen` vertices alone.
-template <class PolygonMesh, class VertexPointMap, class GeomTraits>
-std::pair<Stitch_result, Stitch_result> stitch_with_tolerance(
-    PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits, const Repair_options& options,
-    double tolerance, const Vertex_list<PolygonMesh>& frozen, Any_visitor visitor) {
-  std::pair<Stitch_result, Stitch_result> r;
-  r.first =
-      run_gap_stitcher(pm, vpm, traits, stitch_settings(options, tolerance, true), visitor, frozen);
-  if (r.first.cancelled) return r;
-  r.second = run_gap_stitcher(pm, vpm, traits, stitch_settings(options, tolerance, false), visitor,
-                              frozen);
-  return r;
-}
-
-/// What tolerance stitching will do: the tolerance (negative: derived; NaN: skip the step) and
-/// the vertices it must leave alone.
-template <class PolygonMesh>
-struct Stitching_plan {
-  double tolerance = -1;
-  Vertex_list<PolygonMesh> frozen;
-};
-
-/// Stitches a copy of `pm` as planned; returns the stitching results and, in `intersecting`, the
-/// vertices of `pm` (frozen ones excluded) of the faces that intersect afterwards.
-template <class PolygonMesh, class VertexPointMap, class GeomTraits>
-std::pair<Stitch_result, Stitch_result> stitch_a_copy(const PolygonMesh& pm, VertexPointMap vpm,
-                                                      const GeomTraits& traits,
-                                                      const Repair_options& options,
-                                                      const Stitching_plan<PolygonMesh>& plan,
-                                                      std::size_t& pairs,
-                                                      Vertex_list<PolygonMesh>& intersecting) {
-  using vertex_descriptor = typename boost::graph_traits<PolygonMesh>::vertex_descriptor;
-  using face_descriptor = typename boost::graph_traits<PolygonMesh>::face_descriptor;
-  PolygonMesh trial;
-  std::vector<std::pair<vertex_descriptor, vertex_descriptor>> copies;  // (original, copy)
-  CGAL::copy_face_graph(pm, trial,
-                        parameters::vertex_point_map(vpm).vertex_to_vertex_output_iterator(
-                            std::back_inserter(copies)));
-  const std::set<vertex_descriptor> frozen(plan.frozen.begin(), plan.frozen.end());
-  auto original = get(CGAL::dynamic_vertex_property_t<vertex_descriptor>(), trial);
-  for (vertex_descriptor v : vertices(trial))
-    put(original, v, boost::graph_traits<PolygonMesh>::null_vertex());
-  Vertex_list<PolygonMesh> frozen_copies;
-  for (const auto& [v, copy] : copies) {
-    put(original, copy, v);
-    if (frozen.count(v)) frozen_copies.push_back(copy);
-  }
-  Default_visitor quiet;
-  const auto stitched =
-      stitch_with_tolerance(trial, get(CGAL::vertex_point, trial), traits, options, plan.tolerance,
-                            frozen_copies, Any_visitor(quiet));
-  const std::size_t changes = stitched.first.node_merges + stitched.first.t_junctions_split +
-                              stitched.second.t_junctions_split;
-  pairs = 0;
-  intersecting.clear();
-  if (changes == 0) return stitched;
-  const auto found = bounded_self_intersections(trial).pairs;
-  pairs = found.size();
-  std::set<vertex_descriptor> seen;
-  auto add = [&](vertex_descriptor w) {
-    const vertex_descriptor v = get(original, w);  // null: a T-junction node of the copy
-    if (v != boost::graph_traits<PolygonMesh>::null_vertex() && !frozen.count(v) &&
-        seen.insert(v).second)
-      intersecting.push_back(v);
-  };
-  for (const auto& [f, g] : found)
-    for (face_descriptor face : {f, g})
-      for (vertex_descriptor w : vertices_around_face(halfedge(face, trial), trial)) add(w);
-  // Faces of frozen vertices and T-junction nodes only: the nodes that moved them are one ring
-  // further (a T-junction node is merged with the node that hit its edge).
-  if (intersecting.empty())
-    for (const auto& [f, g] : found)
-      for (face_descriptor face : {f, g})
-        for (vertex_descriptor w : vertices_around_face(halfedge(face, trial), trial))
-          for (vertex_descriptor u : vertices_around_target(halfedge(w, trial), trial)) add(u);
-  return stitched;
-}
-
 /// Tolerance stitching moves border nodes; on coarse CAD meshes, whose long border edges give a
 /// large derived tolerance, and next to thin walls, that can push faces through their
 /// neighbours (libcgal-demo's ALSTOM_TEST4: 518 new self-intersecting pairs). So when
@@ -301,34 +223,37 @@ Stitching_plan<PolygonMesh> plan_stitching(const PolygonMesh& pm, VertexPointMap
   plan.tolerance = options.merge_tolerance;
   if (!options.detect_self_intersections) return plan;
   Step_timer timer(result, "stitching trial", visitor);
-  Vertex_list<PolygonMesh> intersecting;
-  double smallest_local = std::numeric_limits<double>::infinity();  // before any freezing
-  for (int attempt = 0; attempt <= max_freezing_rounds + 1; ++attempt) {
-    std::size_t pairs = 0;
-    const auto stitched = stitch_a_copy(pm, vpm, traits, options, plan, pairs, intersecting);
-    const std::size_t added =
-        pairs > result.self_intersections_input ? pairs - result.self_intersections_input : 0;
-    if (attempt == 0)
-      smallest_local = std::min(stitched.first.min_local_tolerance, stitched.first.merge_tolerance);
-    const std::string suffix = "_" + std::to_string(attempt);
-    timer.count("tolerance" + suffix, stitched.first.merge_tolerance);
-    timer.count("frozen_vertices" + suffix, double(plan.frozen.size()));
-    timer.count("added_self_intersections" + suffix, double(added));
-    if (added == 0) return plan;
-    timer.step().notes.push_back(
-        "stitching with tolerance " + std::to_string(stitched.first.merge_tolerance) + " and " +
-        std::to_string(plan.frozen.size()) + " frozen vertices would add " + std::to_string(added) +
-        " self-intersecting pair(s)");
-    if (attempt < max_freezing_rounds && !intersecting.empty()) {
-      plan.frozen.insert(plan.frozen.end(), intersecting.begin(), intersecting.end());
-    } else if (attempt <= max_freezing_rounds) {
-      plan.frozen.clear();
-      plan.tolerance = 0.25 * smallest_local;  // frozen nodes (tolerance 0) left out
-      attempt = max_freezing_rounds;           // the next attempt is the last
-    } else {
-      break;
+  std::vector<Stitching_attempt> attempts;
+  const Stitch_settings settings = stitch_settings(options, plan.tolerance, true);
+  auto record = [&](std::size_t first) {
+    for (std::size_t k = first; k < attempts.size(); ++k) {
+      const std::string suffix = "_" + std::to_string(k);
+      timer.count("tolerance" + suffix, attempts[k].tolerance);
+      timer.count("frozen_vertices" + suffix, double(attempts[k].frozen_vertices));
+      timer.count("added_self_intersections" + suffix, double(attempts[k].added_pairs));
+      if (attempts[k].added_pairs > 0)
+        timer.step().notes.push_back(
+            "stitching with tolerance " + std::to_string(attempts[k].tolerance) + " and " +
+            std::to_string(attempts[k].frozen_vertices) + " frozen vertices would add " +
+            std::to_string(attempts[k].added_pairs) + " self-intersecting pair(s)");
     }
+  };
+  if (freeze_intersecting_stitches(pm, vpm, traits, settings, true, result.self_intersections_input,
+                                   max_freezing_rounds, plan, attempts)) {
+    record(0);
+    return plan;
   }
+  record(0);
+  // A quarter of the smallest local tolerance of the first attempt (before any freezing), with
+  // nothing frozen, once.
+  plan.frozen.clear();
+  plan.tolerance =
+      0.25 * std::min(attempts.front().min_local_tolerance, attempts.front().tolerance);
+  const std::size_t tried = attempts.size();
+  const bool fallback = freeze_intersecting_stitches(
+      pm, vpm, traits, settings, true, result.self_intersections_input, 0, plan, attempts);
+  record(tried);
+  if (fallback) return plan;
   timer.count("skipped", 1);
   timer.step().notes.push_back(
       "tolerance stitching skipped: every tried tolerance added self-intersections; the gaps are "

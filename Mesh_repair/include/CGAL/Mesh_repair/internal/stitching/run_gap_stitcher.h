@@ -65,20 +65,6 @@ Stitch_result run_gap_stitcher(PolygonMesh& pm, VertexPointMap vpm, const GeomTr
 }
 
 /// Reads the vertex point map, traits and visitor of `np` and runs the stitcher.
-template <class PolygonMesh, class NamedParameters>
-Stitch_result run_gap_stitcher(PolygonMesh& pm, const Stitch_settings& settings,
-                               const NamedParameters& np) {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  using Geom_traits = typename GetGeomTraits<PolygonMesh, NamedParameters>::type;
-  auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                              get_property_map(CGAL::vertex_point, pm));
-  const Geom_traits traits =
-      choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits));
-  Visitor_parameter<NamedParameters> visitor(np);
-  return run_gap_stitcher(pm, vpm, traits, settings, visitor.get());
-}
-
 }  // namespace internal
 }  // namespace Mesh_repair
 }  // namespace CGAL
