@@ -358,6 +358,7 @@ class Hole_filler {
     if (check_) near_faces_.build();
     std::vector<Transaction> transactions;
     std::vector<std::vector<Pinch_weld<PolygonMesh>>> welds(groups.size());
+    std::vector<std::size_t> bridge_faces(groups.size(), 0);
     std::vector<Hole_fill_report> reports(groups.size());
     std::vector<halfedge_descriptor> holes;
     std::vector<std::size_t> hole_group;
@@ -370,6 +371,7 @@ class Hole_filler {
         transactions.back().rollback(patches[k]);
         continue;
       }
+      bridge_faces[k] = patches[k].faces.size();
       for (halfedge_descriptor cycle : weld_pinches(pm_, vpm_, h, welds[k])) {
         holes.push_back(cycle);
         hole_group.push_back(k);
@@ -399,7 +401,8 @@ class Hole_filler {
     for (std::size_t k = 0; k < groups.size(); ++k) {
       if (!attempted[k]) continue;
       combined[k].used = method;
-      reports[k] = verify(combined[k], groups[k], patches[k], transactions[k], welds[k]);
+      reports[k] = verify(combined[k], groups[k], patches[k], transactions[k], welds[k], false,
+                          bridge_faces[k]);
       reports[k].seconds = seconds / double(attempted_count);
     }
     for (std::size_t k = 0; k < groups.size(); ++k) {
@@ -509,6 +512,7 @@ class Hole_filler {
       transaction.rollback(patch);
       return report;
     }
+    const std::size_t bridge_faces = patch.faces.size();
     std::vector<Pinch_weld<PolygonMesh>> welds;
     const std::vector<halfedge_descriptor> cycles = weld_pinches(pm_, vpm_, h, welds);
     report.filled = true;
@@ -529,7 +533,7 @@ class Hole_filler {
         break;
       }
     }
-    return verify(report, group, patch, transaction, welds, self_checked);
+    return verify(report, group, patch, transaction, welds, self_checked, bridge_faces);
   }
 
   /// Keeps the patch when the method filled the hole, the hole is closed and the patch meets
@@ -537,7 +541,7 @@ class Hole_filler {
   /// otherwise rolls it back. Completes the report's counts.
   Hole_fill_report verify(Hole_fill_report report, const Group& group, Patch& patch,
                           Transaction& transaction, std::vector<Pinch_weld<PolygonMesh>>& welds,
-                          bool self_checked = false) {
+                          bool self_checked = false, std::size_t bridge_faces = 0) {
     report.island_cycles = group.islands.size();
     if (report.filled && patch.faces.empty()) {
       report.filled = false;
@@ -558,8 +562,7 @@ class Hole_filler {
     }
     if (!report.filled) {
       if (report.failure.empty()) report.failure = "the method reported failure";
-      transaction.rollback(patch);
-      unweld_pinches(pm_, welds);
+      roll_back(patch, bridge_faces, transaction, welds);
     } else if (check_) {
       near_faces_.keep(patch, transaction.moved_vertices());
     }
@@ -571,6 +574,22 @@ class Hole_filler {
     report.faces_created = patch.faces.size();
     report.vertices_created = patch.vertices.size();
     return report;
+  }
+
+  /// Undoes a fill in the reverse order of its making: the method's faces (added after the
+  /// welds), the welds, then the `bridge_faces` first faces of `patch`, which bridged the islands
+  /// before the welds. Removing a bridge face next to a welded vertex first changes the fans
+  /// whose halfedges the weld swaps back, and leaves a vertex whose halfedges circle forever.
+  void roll_back(Patch& patch, std::size_t bridge_faces, Transaction& transaction,
+                 std::vector<Pinch_weld<PolygonMesh>>& welds) {
+    Patch bridges;
+    if (!welds.empty() && bridge_faces > 0) {
+      bridges.faces.assign(patch.faces.begin(), patch.faces.begin() + bridge_faces);
+      patch.faces.erase(patch.faces.begin(), patch.faces.begin() + bridge_faces);
+    }
+    transaction.rollback(patch);
+    unweld_pinches(pm_, welds);
+    if (!bridges.faces.empty()) transaction.rollback(bridges);
   }
 
   bool closed(const Patch& patch) const {

@@ -64,7 +64,6 @@ Stitch_result run_gap_stitcher(PolygonMesh& pm, VertexPointMap vpm, const GeomTr
   return result;
 }
 
-/// Reads the vertex point map, traits and visitor of `np` and runs the stitcher.
 }  // namespace internal
 }  // namespace Mesh_repair
 }  // namespace CGAL
