@@ -233,11 +233,12 @@ std::size_t self_intersection_count(const Mesh& mesh) {
 }
 
 /// A sphere where two vertices were pushed through the surface, each along a chord (the two
-/// chords do not meet) until just past the far side: each spike pierces the sphere there.
-Mesh sphere_with_spikes(int subdivisions = 4, std::size_t count = 2) {
+/// chords do not meet) until just past the far side (the first one `depth` below the centre):
+/// each spike pierces the sphere there.
+Mesh sphere_with_spikes(int subdivisions = 4, std::size_t count = 2, double depth = 1.1) {
   Mesh mesh;
   MR::make_sphere(mesh, Point(0, 0, 0), 1.0, subdivisions);
-  const std::pair<Point, Point> spikes[] = {{Point(0, 0, 1), Point(0, 0, -1.1)},
+  const std::pair<Point, Point> spikes[] = {{Point(0, 0, 1), Point(0, 0, -depth)},
                                             {Point(0.6, 0.8, 0), Point(0.6, -0.9, 0)}};
   for (std::size_t i = 0; i < count; ++i) {
     const auto& spike = spikes[i];
@@ -290,9 +291,11 @@ TEST(AutomaticRepair, SelfIntersectionsInsideAComponentAreReplacedByDefault) {
 // On a coarse part (an 80-face sphere), the rings around a spike reach most of the part:
 // replacing them would rebuild the part, not repair its defect, so the self-intersection is kept
 // and reported. The same spike on a 320-face sphere is a region of 15% of the faces, replaced
-// (`SelfIntersectionsInsideAComponentAreReplacedByDefault` has it on 5,120 faces).
+// (`SelfIntersectionsInsideAComponentAreReplacedByDefault` has it on 5,120 faces). The spike
+// goes on 2.5 radii past the far side, too far from its neighbours (about 8 of their spacings)
+// to be taken for a vertex thrown off the surface and moved back (the next test).
 TEST(AutomaticRepair, ASelfIntersectionOfACoarsePartIsKeptRatherThanThePartRebuilt) {
-  Mesh mesh = sphere_with_spikes(1, 1);
+  Mesh mesh = sphere_with_spikes(1, 1, 3.5);
   const std::size_t faces = mesh.number_of_faces();
   const std::vector<Point> points(mesh.points().begin(), mesh.points().end());
   const std::size_t before = self_intersection_count(mesh);
@@ -312,6 +315,53 @@ TEST(AutomaticRepair, ASelfIntersectionOfACoarsePartIsKeptRatherThanThePartRebui
   for (auto v : mesh.vertices()) moved += mesh.point(v) != points[std::size_t(v)];
   EXPECT_EQ(moved, 0u);
   EXPECT_TRUE(CGAL::is_closed(mesh));
+}
+
+// Vertices thrown off their place by one and a half spacings (a scan's outliers), beside a hole
+// and away from it, on the flat sides of a subdivided cube: their fans overlap the faces around
+// them, and a patch of the hole would meet the one beside it. Each is moved back to the centre
+// of its neighbours before the holes are filled: no face is removed, and each is back near its
+// grid point.
+TEST(AutomaticRepair, SpikesBesideHolesAreMovedBackAndEveryFaceIsKept) {
+  Mesh mesh;
+  MR::make_subdivided_cube<Mesh, Point>(mesh, 1.0, 10);
+  punch_hole(mesh, Point(0.5, 0.5, 1), 0.2);
+  mesh.collect_garbage();
+  ASSERT_EQ(count_border_cycles(mesh), 1u);
+  // Grid point, and the push within its side of the cube (1.5 spacings of 0.1).
+  const std::pair<Point, Kernel::Vector_3> spikes[] = {
+      {Point(0.5, 0.8, 1), Kernel::Vector_3(0.12, -0.09, 0)},  // one ring beside the hole
+      {Point(0.3, 0.6, 0), Kernel::Vector_3(0.09, 0.12, 0)},
+      {Point(0.5, 0, 0.4), Kernel::Vector_3(-0.12, 0, 0.09)}};
+  std::vector<std::pair<Mesh::Vertex_index, Point>> moved;
+  for (const auto& spike : spikes)
+    for (auto v : mesh.vertices())
+      if (CGAL::squared_distance(mesh.point(v), spike.first) < 1e-12) {
+        mesh.point(v) = spike.first + spike.second;
+        moved.emplace_back(v, spike.first);
+      }
+  ASSERT_EQ(moved.size(), 3u);
+  ASSERT_GT(self_intersection_count(mesh), 0u);
+  const std::size_t faces = mesh.number_of_faces();
+  const auto result = MR::automatic_repair(mesh);
+  EXPECT_TRUE(result.complete()) << (result.remaining.empty() ? "" : result.remaining.front());
+  EXPECT_EQ(self_intersection_count(mesh), 0u);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  EXPECT_TRUE(CGAL::is_closed(mesh));
+  EXPECT_EQ(result.holes.filled, 1u);
+  const auto* spike_step = find_step(result, "spikes");
+  ASSERT_NE(spike_step, nullptr);
+  EXPECT_EQ(spike_step->count("spike_vertices_moved"), 3.0);
+  EXPECT_GT(spike_step->count("spike_largest_move"), 0.1);
+  const auto* removal = find_step(result, "self-intersection removal");
+  if (removal) {
+    EXPECT_EQ(removal->count("faces_removed"), 0.0);
+  }
+  const auto* filling = find_step(result, "hole filling");
+  ASSERT_NE(filling, nullptr);
+  EXPECT_EQ(mesh.number_of_faces(), faces + std::size_t(filling->count("faces_added")));
+  for (const auto& entry : moved)
+    EXPECT_LT(std::sqrt(CGAL::squared_distance(mesh.point(entry.first), entry.second)), 0.025);
 }
 
 // An assembly of two closed solids that pass through each other: each is a solid of its own and

@@ -8,6 +8,7 @@
 #include <CGAL/Mesh_repair/fill_holes.h>
 #include <CGAL/Mesh_repair/internal/automatic_repair/region_replacement.h>
 #include <CGAL/Mesh_repair/internal/automatic_repair/self_union.h>
+#include <CGAL/Mesh_repair/internal/automatic_repair/spike_relaxation.h>
 #include <CGAL/Mesh_repair/internal/automatic_repair/solid_union.h>
 #include <CGAL/Mesh_repair/internal/automatic_repair/through_holes.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/border_cycles.h>
@@ -34,6 +35,7 @@
 #include <tbb/task_arena.h>
 #endif
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <iterator>
@@ -110,6 +112,9 @@ constexpr double max_replaced_part_share = 0.25;
 /// bounding-box diagonal from the result: past that the fold is not a defect but a shape.
 constexpr double max_autorefined_area_fraction = 0.01;
 constexpr double max_autorefined_distance_fraction = 0.005;
+/// Spike vertices are moved back in at most this many rounds (a round moves the likeliest spike
+/// of each intersecting pair; a spike hidden behind another shows in the next round).
+constexpr int max_spike_relaxation_rounds = 6;
 
 /// Times a step, reports it to the visitor (balanced start/end, also on cancellation) and
 /// records it in the result.
@@ -1038,6 +1043,77 @@ std::size_t autorefine_self_intersecting_parts(PolygonMesh& pm, VertexPointMap v
   return replaced;
 }
 
+/// The intersecting pairs of faces of one connected component; `between` counts the others,
+/// `truncated` says the enumeration stopped at its limit.
+template <class PolygonMesh>
+std::vector<std::pair<typename boost::graph_traits<PolygonMesh>::face_descriptor,
+                      typename boost::graph_traits<PolygonMesh>::face_descriptor>>
+pairs_within_components(const PolygonMesh& pm, std::size_t& between, bool& truncated) {
+  std::vector<std::pair<typename boost::graph_traits<PolygonMesh>::face_descriptor,
+                        typename boost::graph_traits<PolygonMesh>::face_descriptor>>
+      within;
+  const auto found = bounded_self_intersections(pm);
+  truncated = found.truncated;
+  const auto component = face_components(pm);
+  between = 0;
+  for (const auto& pair : found.pairs) {
+    if (component.at(pair.first) == component.at(pair.second))
+      within.push_back(pair);
+    else
+      ++between;
+  }
+  return within;
+}
+
+/// The spikes among the vertices of the intersecting `pairs` are moved back to the centre of
+/// their neighbours (spike_relaxation.h), round after round while a round moves one;
+/// `find_pairs` gives the pairs left after each round.
+template <class PolygonMesh, class VertexPointMap, class GeomTraits, class PairVector,
+          class FindPairs>
+void relax_spikes(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits, PairVector& pairs,
+                  FindPairs&& find_pairs, Step_timer& timer) {
+  Spike_relaxer<PolygonMesh, VertexPointMap> relaxer(pm, vpm);
+  Spike_relaxation_report report;
+  for (int round = 0; round < max_spike_relaxation_rounds && !pairs.empty(); ++round) {
+    if (relaxer.relax(pairs, traits, report) == 0) break;
+    pairs = find_pairs();
+  }
+  if (report.vertices_moved == 0) return;
+  timer.count("spike_vertices_moved", double(report.vertices_moved));
+  timer.count("spike_largest_move", report.largest_move);
+}
+
+/// Before the holes are filled: a spike beside a hole makes every patch of the hole meet it.
+/// Only in the parts with a border (a closed part is autorefined first, in
+/// step_remove_self_intersections, which keeps its surface as it is), and only where the input
+/// intersects itself inside a part; vertices on a border are left to the relaxation after the
+/// filling, when they are no longer on one.
+template <class PolygonMesh, class VertexPointMap, class GeomTraits>
+void step_relax_spikes(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
+                       Any_visitor visitor, Repair_result& result) {
+  if (result.self_intersections_input_truncated ||
+      result.self_intersections_input <= result.self_intersections_input_between_components)
+    return;
+  Step_timer timer(result, "spikes", visitor);
+  auto pairs_in_open_parts = [&pm] {
+    std::size_t between = 0;
+    bool truncated = false;
+    auto pairs = pairs_within_components(pm, between, truncated);
+    if (truncated) pairs.clear();
+    const auto component = face_components(pm);
+    std::unordered_set<std::size_t> open;
+    for (auto h : halfedges(pm))
+      if (is_border(h, pm)) open.insert(component.at(face(opposite(h, pm), pm)));
+    pairs.erase(
+        std::remove_if(pairs.begin(), pairs.end(),
+                       [&](const auto& pair) { return !open.count(component.at(pair.first)); }),
+        pairs.end());
+    return pairs;
+  };
+  auto pairs = pairs_in_open_parts();
+  relax_spikes(pm, vpm, traits, pairs, pairs_in_open_parts, timer);
+}
+
 /// Self-intersections inside one connected component are removed: the intersecting faces and
 /// the faces within 1, then 2 vertex rings are replaced by checked patches (Region_replacer),
 /// all or nothing per region. Intersections between two components (an assembly of touching
@@ -1052,18 +1128,7 @@ void step_remove_self_intersections(PolygonMesh& pm, VertexPointMap vpm, const G
   Step_timer timer(result, "self-intersection removal", visitor);
   bool truncated = false;
   auto within_component_pairs = [&](std::size_t& between) {
-    std::vector<std::pair<face_descriptor, face_descriptor>> within;
-    const auto found = bounded_self_intersections(pm);
-    truncated = found.truncated;
-    const auto component = face_components(pm);
-    between = 0;
-    for (const auto& pair : found.pairs) {
-      if (component.at(pair.first) == component.at(pair.second))
-        within.push_back(pair);
-      else
-        ++between;
-    }
-    return within;
+    return pairs_within_components(pm, between, truncated);
   };
   std::size_t between = 0;
   auto pairs = within_component_pairs(between);
@@ -1082,6 +1147,11 @@ void step_remove_self_intersections(PolygonMesh& pm, VertexPointMap vpm, const G
   // where region replacement would cut a part that crosses itself and cap the ends.
   if (!pairs.empty() && autorefine_self_intersecting_parts(pm, vpm, traits, pairs, timer) > 0)
     pairs = within_component_pairs(between);
+  // Then spikes: moved back, a spike keeps every face, where region replacement would remove
+  // its rings.
+  if (!pairs.empty())
+    relax_spikes(
+        pm, vpm, traits, pairs, [&] { return within_component_pairs(between); }, timer);
   std::unordered_set<face_descriptor> involved;
   for (const auto& pair : pairs) involved.insert({pair.first, pair.second});
   Region_replacement_report total;
@@ -1347,6 +1417,8 @@ Repair_result run_repair_pipeline(PolygonMesh& pm, VertexPointMap vpm, const Geo
     step_remove_hole_fragments(pm, vpm, options, visitor, result);
   if (!result.cancelled && options.bridge_through_holes)
     step_bridge_through_holes(pm, vpm, traits, visitor, result);
+  if (!result.cancelled && options.repair_self_intersections && options.detect_self_intersections)
+    step_relax_spikes(pm, vpm, traits, visitor, result);
   std::vector<typename boost::property_traits<VertexPointMap>::value_type> hole_points;
   if (!result.cancelled) hole_points = step_fill_holes(pm, vpm, traits, options, visitor, result);
   if (!result.cancelled && options.repair_self_intersections)
