@@ -156,10 +156,12 @@ Repair_options repair_options_from(const PolygonMesh& pm, const NamedParameters&
 ///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{repair_self_intersections}
-///     \cgalParamDescription{replace the faces that intersect another face of their connected
-///       component, with the faces within 1 then 2 vertex rings, by checked Liepa patches (all
-///       or nothing per region); intersections between components are kept (doc:
-///       automatic_repair.md, "Self-intersections")}
+///     \cgalParamDescription{remove the intersections of faces of one connected component:
+///       spike vertices beside holes are moved back to the centre of their neighbours before the
+///       filling (step "spikes"); then closed parts are autorefined within bounds, spikes moved
+///       back, and the faces still intersecting, with the faces within 1 to 6 vertex rings,
+///       replaced by checked Liepa patches (all or nothing per region); intersections between
+///       components are kept (doc: automatic_repair.md, "Self-intersections")}
 ///     \cgalParamType{bool}
 ///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd
