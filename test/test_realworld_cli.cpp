@@ -13,6 +13,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <set>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
@@ -250,6 +252,55 @@ TEST(RealWorld, OverlappingSolidsAreKeptAsSeparateSolids) {
   EXPECT_TRUE(run.reading.closed && run.reading.valid);
   EXPECT_EQ(repair_member(run, "status"), "complete_except_kept");
   EXPECT_NE(repair_member(run, "self_intersections_between_components"), "0") << run.report;
+}
+
+/// The outer surface of a union of unit cells (integer corners), two outward triangles per
+/// square; the cells' corners are shared points, as a voxel or CAD export writes them.
+Soup voxels(const std::vector<std::array<int, 3>>& cells) {
+  Soup s;
+  std::map<std::array<int, 3>, std::size_t> index;
+  auto point = [&](std::array<int, 3> p) {
+    const auto found = index.emplace(p, s.points.size());
+    if (found.second) s.points.push_back({double(p[0]), double(p[1]), double(p[2])});
+    return found.first->second;
+  };
+  const std::set<std::array<int, 3>> filled(cells.begin(), cells.end());
+  for (const auto& c : cells)
+    for (int axis = 0; axis < 3; ++axis)
+      for (int side = 0; side < 2; ++side) {
+        std::array<int, 3> next = c;
+        next[axis] += side ? 1 : -1;
+        if (filled.count(next)) continue;
+        const int a = (axis + 1) % 3, b = (axis + 2) % 3;
+        std::array<int, 3> base = c;
+        base[axis] += side;
+        std::vector<std::size_t> q;
+        for (const auto& d : {std::array<int, 2>{0, 0}, {1, 0}, {1, 1}, {0, 1}}) {
+          std::array<int, 3> p = base;
+          p[a] += d[0];
+          p[b] += d[1];
+          q.push_back(point(p));
+        }
+        if (!side) std::swap(q[1], q[3]);  // outward: -axis
+        s.faces.push_back({q[0], q[1], q[2]});
+        s.faces.push_back({q[0], q[2], q[3]});
+      }
+  return s;
+}
+
+// One solid pinched along an edge: two cells meet only along it, a layer of cells above joins
+// them. The corners at the pinch are not spikes (nothing may move them apart), and where the
+// reading splits the pinch, the faces that met there touch: the report counts the pairs CGAL
+// finds in the written file, more than in the repaired mesh, and lists them.
+TEST(RealWorld, ASolidPinchedAlongAnEdgeKeepsItsShapeAndTheReadingsPairsAreReported) {
+  const Repair_run run =
+      repair("pinched", voxels({{0, 0, 0}, {1, 1, 0}, {0, 0, 1}, {1, 0, 1}, {0, 1, 1}, {1, 1, 1}}));
+  EXPECT_EQ(run.status, 1) << run.out;
+  EXPECT_EQ(run.report.find("spike_vertices_moved"), std::string::npos) << run.out;
+  EXPECT_EQ(run.reading.faces, 48u);
+  EXPECT_GT(run.reading.self_intersections, 0u);
+  EXPECT_NE(run.out.find("self-intersecting face pair(s) inside its parts"), std::string::npos)
+      << run.out;
 }
 
 // The same checks on the other formats: binary STL stores every triangle's corners as floats,

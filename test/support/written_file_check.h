@@ -22,6 +22,7 @@ struct Cgal_reading {
   std::size_t duplicated_polygons = 0;   ///< after merging points, either orientation
   std::size_t vertices = 0, faces = 0, border_cycles = 0;
   std::size_t non_manifold_edges = 0, non_manifold_vertices = 0;
+  std::size_t self_intersections = 0;  ///< pairs CGAL finds in the mesh it read
   bool valid = false, closed = false, manifold = false;
 };
 

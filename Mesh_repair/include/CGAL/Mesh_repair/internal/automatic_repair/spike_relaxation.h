@@ -15,6 +15,7 @@
 
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/properties.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/box_intersection_d.h>
 
 #include <algorithm>
@@ -129,8 +130,14 @@ class Spike_relaxer {
   }
 
   /// The vertex of the two faces farthest from the centre of its neighbours, if it is a spike;
-  /// none if it is too far to be one (its neighbours are no spikes: they are merely near it).
+  /// none if it is too far to be one (its neighbours are no spikes: they are merely near it),
+  /// and none if the faces have distinct corners at one point: sheets that touch there (a pinch
+  /// kept split, a CAD part's corners on another's) are a contact, and moving a corner apart would
+  /// change the shape.
   vertex_descriptor likeliest_spike(face_descriptor f, face_descriptor g) const {
+    for (vertex_descriptor v : vertices_around_face(halfedge(f, pm_), pm_))
+      for (vertex_descriptor w : vertices_around_face(halfedge(g, pm_), pm_))
+        if (v != w && get(vpm_, v) == get(vpm_, w)) return GT::null_vertex();
     vertex_descriptor best = GT::null_vertex();
     double best_score = 0;
     for (face_descriptor face : {f, g})
@@ -153,25 +160,28 @@ class Spike_relaxer {
     return faces;
   }
 
-  /// The faces whose boxes meet the box of a moved fan, at its old or its new place: whatever a
-  /// fan can meet, moved or put back.
+  /// The faces whose boxes meet the box of a moved fan, its vertices at their old and their new
+  /// places: whatever a fan can meet, whichever of its moved vertices are put back.
   std::vector<face_descriptor> faces_near(
       const std::unordered_map<vertex_descriptor, Point>& moved) const {
     using Box =
         CGAL::Box_intersection_d::Box_with_info_d<double, 3, face_descriptor,
                                                   CGAL::Box_intersection_d::ID_FROM_BOX_ADDRESS>;
+    auto both_places = [&](vertex_descriptor v) {
+      const auto before = moved.find(v);
+      const CGAL::Bbox_3 now = get(vpm_, v).bbox();
+      return before == moved.end() ? now : now + before->second.bbox();
+    };
     std::vector<Box> fans, all;
     for (const auto& entry : moved) {
-      CGAL::Bbox_3 box = entry.second.bbox() + get(vpm_, entry.first).bbox();
-      for (vertex_descriptor w : neighbours(entry.first)) box += get(vpm_, w).bbox();
+      CGAL::Bbox_3 box = both_places(entry.first);
+      for (vertex_descriptor w : neighbours(entry.first)) box += both_places(w);
       fans.emplace_back(box, face_descriptor());
     }
-    for (face_descriptor f : faces(pm_)) {
-      CGAL::Bbox_3 box;
-      for (vertex_descriptor v : vertices_around_face(halfedge(f, pm_), pm_))
-        box += get(vpm_, v).bbox();
-      all.emplace_back(box, f);
-    }
+    for (face_descriptor f : faces(pm_))
+      all.emplace_back(CGAL::Polygon_mesh_processing::face_bbox(
+                           f, pm_, CGAL::parameters::vertex_point_map(vpm_)),
+                       f);
     std::unordered_set<face_descriptor> near;
     CGAL::box_intersection_d(fans.begin(), fans.end(), all.begin(), all.end(),
                              [&](const Box&, const Box& b) { near.insert(b.info()); });
