@@ -666,8 +666,8 @@ bool fill_in_batches(Filler& filler, const std::vector<Group>& groups,
 /// The remnant closings of the advancing front (`Advancing_front_options::
 /// remnant_visits_per_hole`) visit at most this many stored triangles per hole and per face of
 /// the mesh: a budget proportional to the input. Meshes of 3,000 faces and more keep the whole 60
-/// million; on a 318-face fuzzed file whose three failing holes spent 1.8 s of it (14 s under
-/// the fuzzer's sanitizers), the repair takes 0.47 s with the same result.
+/// million; small meshes whose holes have no valid closing no longer spend it all (the fuzzed
+/// files and figures are in doc/fuzzing.md).
 constexpr std::size_t remnant_visits_per_mesh_face = 20000;
 
 /// Fills `groups` (all selected unless `apply_selection` is false); reports in group order.

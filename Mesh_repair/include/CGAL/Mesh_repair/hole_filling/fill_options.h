@@ -31,9 +31,10 @@ struct Advancing_front_options {
   /// `shape_prediction` sequences turn it off and hand the hole to the next method instead.
   bool close_stuck_front = true;
   /// The work allowed to those closings on one hole, in stored triangles visited (60 million:
-  /// about 5 s), shared by all its attempts; past it, a closing stops after its first 8 rounds
-  /// and the loop is left open (doc/advancing_front.md, "Closing a stuck front"). The filling
-  /// lowers it to 20,000 per face of the mesh on meshes of fewer than 3,000 faces.
+  /// about 5 s; 8 steps of their dynamic programs count as one visit), shared by all its attempts;
+  /// past it, a closing stops after its first 8 rounds and the loop is left open
+  /// (doc/advancing_front.md, "Closing a stuck front"). The filling lowers it to 20,000 per face of
+  /// the mesh on meshes of fewer than 3,000 faces.
   std::size_t remnant_visits_per_hole = 60'000'000;
   bool check_self_intersections = true;   ///< exact check of each attempt
   unsigned int smoothing_iterations = 3;  ///< tangential relaxation passes of the new nodes
