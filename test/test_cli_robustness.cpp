@@ -11,6 +11,7 @@
 #include <fstream>
 #include <sstream>
 #include <sys/wait.h>
+#include <tuple>
 #include <unistd.h>
 
 namespace {
@@ -101,6 +102,34 @@ TEST(CliRobustness, MalformedInputsExitTwoWithOneLine) {
     EXPECT_EQ(count_lines(run.stderr_text), 1u) << c.first << ": " << run.stderr_text;
     EXPECT_LT(run.seconds, 10.0) << c.first;
     EXPECT_EQ(fs::file_size(path), before) << c.first;
+  }
+}
+
+// Inputs that parse but leave nothing a repair can work on: faces that are all collinear (every
+// one removed as degenerate, where the tool used to write a file with no face and exit 1), and
+// a mesh spanning less than 1e-100 (its volumes underflow; the repair decided otherwise than on
+// the same mesh at scale 1). Both exit 2 with one line and write nothing.
+TEST(CliRobustness, InputsWithNothingToRepairExitTwoWithOneLine) {
+  const std::string tetrahedron = "3 0 1 2\n3 0 3 1\n3 1 3 2\n3 2 3 0\n";
+  const std::vector<std::tuple<std::string, std::string, std::string>> cases = {
+      {"collinear.off", "OFF\n4 4 0\n0 0 0\n1 2 3\n2 4 6\n3 6 9\n" + tetrahedron,
+       "no face left after repair (faces removed: degenerate faces 4)"},
+      {"tiny.off", "OFF\n4 4 0\n0 0 0\n1e-120 0 0\n0 1e-120 0\n0 0 1e-120\n" + tetrahedron,
+       "the points span only 1e-120"},
+  };
+  for (const auto& [name, text, reason] : cases) {
+    const fs::path path = scratch(name), out = scratch("out_" + name);
+    write_bytes(path, text);
+    std::vector<std::string> commands{"repair " + path.string() + " -o " + out.string()};
+    if (name == "tiny.off") commands.push_back("check " + path.string());  // refused on reading
+    for (const std::string& command : commands) {
+      const Cli_run run = run_cli(command);
+      EXPECT_EQ(run.status, 2) << command << ": " << run.stderr_text;
+      EXPECT_EQ(count_lines(run.stderr_text), 1u) << run.stderr_text;
+      EXPECT_NE(run.stderr_text.find(path.string() + ": "), std::string::npos) << run.stderr_text;
+      EXPECT_NE(run.stderr_text.find(reason), std::string::npos) << run.stderr_text;
+    }
+    EXPECT_FALSE(fs::exists(out)) << name;
   }
 }
 

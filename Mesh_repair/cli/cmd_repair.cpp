@@ -259,6 +259,19 @@ void take_pairs_of_the_reading(Mesh& written, const CGAL::Mesh_repair::Defect_re
   result.self_intersections_output_truncated = after.self_intersections_truncated;
 }
 
+/// The line for an input whose every face the repair removed (all of them degenerate, say):
+/// bad input, like one with no face at all, rather than an empty output; names the steps.
+std::string nothing_left(const std::string& input, const CGAL::Mesh_repair::Repair_result& result) {
+  std::string removed;
+  for (const auto& step : result.steps) {
+    const double faces = step.count("faces_removed");
+    if (faces > 0)
+      removed += (removed.empty() ? "" : ", ") + step.name + " " + std::to_string(long(faces));
+  }
+  return input + ": no face left after repair (faces removed: " +
+         (removed.empty() ? std::string("none counted") : removed) + "); nothing written";
+}
+
 int repair_one(const Arguments& args) {
   const std::string input = args.single_input("mesh_repair repair IN -o OUT");
   const std::string output = args.get("-o");
@@ -306,6 +319,7 @@ int repair_one(const Arguments& args) {
                 .number_of_threads(int(threads))
                 .random_seed(unsigned(args.get_int("--seed", 0)))
                 .visitor(std::ref(progress)));
+  if (num_faces(mesh) == 0) throw Input_error(nothing_left(input, result));
   save_mesh(output, mesh, args.has("--binary"));
   // What the file holds: read back as CGAL reads it; the defects after are those of that
   // reading (what `mesh_repair check OUT` reports).

@@ -11,6 +11,7 @@
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <csignal>
@@ -78,10 +79,16 @@ inline std::string precheck_mesh_file(const std::string& filename) {
 /// far below (single-precision STL cannot exceed 3.4e38).
 constexpr double max_coordinate_magnitude = 1e100;
 
-/// Every coordinate finite and at most `max_coordinate_magnitude` (a soup's vertices, or a point
-/// set's points); the reason when one is not.
+/// The smallest extent (largest side of the bounding box) of points that are not all one point:
+/// below it the cubes of their differences underflow, and a repair of the same mesh scaled by
+/// 1e-120 decided otherwise than at scale 1 (more faces, more intersecting pairs).
+constexpr double min_extent = 1e-100;
+
+/// Every coordinate finite and at most `max_coordinate_magnitude`, and the points spanning zero or
+/// at least `min_extent` (a soup's vertices, or a point set's points); the reason when not.
 template <class Point>
 std::string validate_points(const std::string& filename, const std::vector<Point>& points) {
+  std::array<double, 3> lo{}, hi{};
   for (std::size_t i = 0; i < points.size(); ++i) {
     const auto& p = points[i];
     if (!std::isfinite(CGAL::to_double(p.x())) || !std::isfinite(CGAL::to_double(p.y())) ||
@@ -99,6 +106,20 @@ std::string validate_points(const std::string& filename, const std::vector<Point
           << ", above 1e100: the cubes of its differences (volumes) would overflow";
       return out.str();
     }
+    const std::array<double, 3> c{CGAL::to_double(p.x()), CGAL::to_double(p.y()),
+                                  CGAL::to_double(p.z())};
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = i == 0 ? c[k] : (std::min)(lo[k], c[k]);
+      hi[k] = i == 0 ? c[k] : (std::max)(hi[k], c[k]);
+    }
+  }
+  const double extent = (std::max)({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+  if (extent > 0 && extent < min_extent) {
+    std::ostringstream out;
+    out << filename << ": the points span only " << extent
+        << " (the largest side of their bounding box), below 1e-100: the cubes of their "
+           "differences (volumes) would underflow; scale the mesh up";
+    return out.str();
   }
   return {};
 }
