@@ -10,6 +10,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <gtest/gtest.h>
 
+#include "scratch_folder.h"
 #include "support/cgal_calls.h"
 #include "support/hole_punching.h"
 
@@ -697,8 +698,8 @@ TEST(FillHolesDemoData, SaddleLoopAcrossTheCylinderIsClosedByEachFrontMethod) {
 
 #ifdef MESH_REPAIR_CLI
 TEST(FillCli, FillsASphereHoleExitsZeroAndWritesOneReportEntryPerHole) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("mesh_repair_fill_" + std::to_string(::getpid()));
+  // Removed when the process ends, also when an assertion stops the test.
+  const fs::path dir = mesh_repair_test::scratch_folder("mesh_repair_test_fill_cli_") / "sphere";
   fs::create_directories(dir);
   Mesh mesh = sphere_with_hole(0.5, 3);
   ASSERT_EQ(MR::write_mesh((dir / "in.off").string(), mesh), "");
@@ -722,8 +723,8 @@ TEST(FillCli, FillsASphereHoleExitsZeroAndWritesOneReportEntryPerHole) {
 
 /// `--threads N` gives the same mesh as one thread, byte for byte; 0 is refused.
 TEST(FillCli, ThreadsOptionGivesTheSameOutputAndRefusesZero) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("mesh_repair_fill_threads_" + std::to_string(::getpid()));
+  // Removed when the process ends, also when an assertion stops the test.
+  const fs::path dir = mesh_repair_test::scratch_folder("mesh_repair_test_fill_cli_") / "threads";
   fs::create_directories(dir);
   Mesh mesh = sphere_with_hole(0.3, 3);
   punch_hole(mesh, Point(0, 0, -1), 0.3);
