@@ -107,7 +107,7 @@ TEST(CliRobustness, MalformedInputsExitTwoWithOneLine) {
 
 // Inputs that parse but leave nothing a repair can work on: faces that are all collinear (every
 // one removed as degenerate, where the tool used to write a file with no face and exit 1), and
-// a mesh spanning less than 1e-100 (its volumes underflow; the repair decided otherwise than on
+// a mesh spanning less than 1e-60 (its volumes underflow; the repair decided otherwise than on
 // the same mesh at scale 1). Both exit 2 with one line and write nothing.
 TEST(CliRobustness, InputsWithNothingToRepairExitTwoWithOneLine) {
   const std::string tetrahedron = "3 0 1 2\n3 0 3 1\n3 1 3 2\n3 2 3 0\n";

@@ -1,6 +1,8 @@
 // Reading, soup repair counts and atomic writing (io.h).
+#include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Mesh_repair/generators.h>
+#include <CGAL/Mesh_repair/internal/finite_distance_traits.h>
 #include <CGAL/Mesh_repair/io.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -8,6 +10,7 @@
 
 #include "scratch_folder.h"
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -150,6 +153,42 @@ TEST(SoupRepair, PolygonsCgalCannotTriangulateAreSplitIntoFans) {
   EXPECT_EQ(report.triangles_from_polygons, 2u + 5u + 2u);
   EXPECT_EQ(num_faces(mesh), 9u);
   for (auto f : faces(mesh)) EXPECT_EQ(CGAL::degree(f, mesh), 3u);
+}
+
+// A pentagon whose corners lie 1e-60 apart beside one 4.4 away: seen along the Newell normal its
+// projection is simple, seen along the normal CGAL's triangulate_face computes it crosses
+// itself, and CGAL 5.5's constrained triangulation then reached a null face (found by fuzzing).
+// The check now uses CGAL's own normal, so the polygon goes to a fan.
+TEST(SoupRepair, PolygonCrossingItselfAlongCgalsNormalIsFanned) {
+  const fs::path path = scratch("pentagon_1e-60.obj");
+  write_text(path,
+             "v 1e-60 2e-60 0\nv -5e-60 1e-60 1e-60\nv 1e-60 5e-60 0\nv 2e-60 4.44 4.4e43\n"
+             "v 2e-60 2e-60 0\nf 1 2 4 5 3\n");
+  Mesh mesh;
+  MR::Soup_repair_report report;
+  ASSERT_EQ(MR::read_mesh(path.string(), mesh, report), "");
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  EXPECT_EQ(report.polygons_triangulated, 1u);
+  EXPECT_EQ(report.triangles_from_polygons, 3u);
+  for (auto f : faces(mesh)) EXPECT_EQ(CGAL::degree(f, mesh), 3u);
+}
+
+// CGAL 5.5's closest point on a triangle whose normal's squared length underflows (corners
+// 1e-139 apart beside one 2e-59 away) is NaN, and comparing distances to it raised SIGFPE in
+// GMP. A distance tree passes over that triangle: the distance is that to its neighbour, which
+// shares the side nearest to the query.
+TEST(DistanceTree, TrianglesWhoseClosestPointIsNotFiniteArePassedOver) {
+  using Triangles = std::vector<Kernel::Triangle_3>;
+  const Point a(2e-59, 0, 1e-179), b(0, 0, 0), c(1e-139, 0, 0), d(0, 0, 0.2);
+  const Triangles triangles{{a, b, c}, {b, a, d}};
+  MR::internal::Distance_tree<Kernel,
+                              CGAL::AABB_triangle_primitive<Kernel, Triangles::const_iterator>>
+      tree(triangles.begin(), triangles.end());
+  tree.accelerate_distance_queries();
+  const Point q(0.29, 0, -0.09);
+  const Point p = tree.closest_point(q);
+  EXPECT_TRUE(std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z())) << p;
+  EXPECT_NEAR(tree.squared_distance(q), 0.29 * 0.29 + 0.09 * 0.09, 1e-12);
 }
 
 TEST(ReadErrors, EachBadFileGetsOneLine) {

@@ -152,8 +152,10 @@ TEST(Readers, MalformedFilesGiveOneLineWithPlaceAndReason) {
       {"ply_list_count_huge.ply", "byte 204: a list of 4294967295 values exceeds the limit"},
       {"obj_relative_index_out_of_range.obj", "line 2: relative vertex index -2"},
       {"ply_binary_zero_faces.ply", "contains no faces"},
-      {"coordinates_1e308.off", "vertex 0 has a coordinate of magnitude 1e+308, above 1e100"},
-      {"coordinates_1e308.obj", "has a coordinate of magnitude 1e+308, above 1e100"},
+      {"coordinates_1e308.off", "vertex 0 has a coordinate of magnitude 1e+308, above 1e60"},
+      {"coordinates_1e308.obj", "has a coordinate of magnitude 1e+308, above 1e60"},
+      {"pentagon_huge_coordinate.obj", "above 1e60: products of squared lengths would overflow"},
+      {"span_1e-98_tetrahedron.off", "the points span only 9e-98"},
   };
   for (const auto& c : cases) {
     const fs::path path = corpus_dir / c.first;

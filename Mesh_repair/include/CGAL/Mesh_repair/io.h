@@ -306,19 +306,24 @@ inline void add_soup_changes(Soup_repair_report& report, const Soup_repair_repor
 
 namespace internal {
 
-/// False when the projection of `polygon` (more than 3 sides) is not simple
-/// (internal/polygon_projection.h): CGAL's triangulation would insert every crossing of two
-/// sides as a vertex (O(n^2) time and memory: about a million for a {1500/601} star) and then
-/// fail, and on a small polygon whose projection degenerates (a pentagon with one coordinate
-/// of 4e91, found by fuzzing) CGAL 5.5's triangulate_faces dereferences a null face. Such a
-/// polygon goes to the fan directly.
-template <class Point, class Polygon>
-bool worth_triangulating_with_cgal(const std::vector<Point>& points, const Polygon& polygon) {
-  if (polygon.size() <= 3) return true;
+/// False when face `f` of `pm` (more than 3 sides) is not simple seen along the normal CGAL's
+/// `triangulate_face` projects it on (`compute_face_normal`, so that both decide on the same
+/// projection), or when that normal is zero or not finite (internal/polygon_projection.h).
+/// CGAL's triangulation would insert every crossing of two sides as a vertex (O(n^2) time and
+/// memory: about a million for a {1500/601} star) and then fail; on a small polygon whose
+/// projection crosses itself only by a rounding (corners 1e-60 apart beside one at 4.44, or one
+/// coordinate of 4e91: found by fuzzing) CGAL 5.5's constrained triangulation dereferences a
+/// null face, and on a normal that is not finite (coordinates of 1e99) its exact predicates
+/// raise SIGFPE. Such a polygon goes to the fan directly.
+template <class PolygonMesh>
+bool worth_triangulating_with_cgal(typename boost::graph_traits<PolygonMesh>::face_descriptor f,
+                                   const PolygonMesh& pm) {
+  if (degree(f, pm) <= 3) return true;
+  const auto vpm = get(CGAL::vertex_point, pm);
+  using Point = typename boost::property_traits<decltype(vpm)>::value_type;
   std::vector<Point> corners;
-  corners.reserve(polygon.size());
-  for (std::size_t i : polygon) corners.push_back(points[i]);
-  return projection_is_simple(corners);
+  for (auto v : vertices_around_face(halfedge(f, pm), pm)) corners.push_back(get(vpm, v));
+  return projection_is_simple(corners, CGAL::Polygon_mesh_processing::compute_face_normal(f, pm));
 }
 
 /// Appends to `triangles` the triangles of one polygon of `points` (indices into `points`):
@@ -334,7 +339,6 @@ void triangulate_polygon(const std::vector<Point>& points, const Polygon& polygo
     for (std::size_t k = 1; k + 1 < polygon.size(); ++k)
       triangles.push_back({polygon[0], polygon[k], polygon[k + 1]});
   };
-  if (!worth_triangulating_with_cgal(points, polygon)) return fan();
   PolygonMesh one;
   auto vpm = get(CGAL::vertex_point, one);
   std::unordered_map<vertex_descriptor, std::size_t> index;
@@ -347,6 +351,7 @@ void triangulate_polygon(const std::vector<Point>& points, const Polygon& polygo
   }
   const auto f = CGAL::Euler::add_face(corners, one);
   if (f == boost::graph_traits<PolygonMesh>::null_face() ||
+      !worth_triangulating_with_cgal(f, one) ||
       !CGAL::Polygon_mesh_processing::triangulate_face(f, one) ||
       !CGAL::is_valid_polygon_mesh(one) || num_faces(one) + 2 != polygon.size())
     return fan();
@@ -404,10 +409,10 @@ std::string soup_to_mesh(const Polygon_soup<Point>& soup, PolygonMesh& pm, bool 
   if (triangulate) {
     std::size_t non_triangles = 0;
     bool large_crossing_polygon = false;
-    for (const auto& polygon : soup.polygons) {
-      non_triangles += polygon.size() > 3 ? 1 : 0;
+    for (auto f : faces(pm)) {
+      non_triangles += degree(f, pm) > 3 ? 1 : 0;
       large_crossing_polygon =
-          large_crossing_polygon || !internal::worth_triangulating_with_cgal(soup.points, polygon);
+          large_crossing_polygon || !internal::worth_triangulating_with_cgal(f, pm);
     }
     // CGAL would fail on it after quadratic work; the fallback fans it (internal::
     // triangulate_polygon) and triangulates the other polygons as CGAL does.

@@ -152,7 +152,7 @@ Mesh_points_result mesh_points(const PointRange& points, PolygonMesh& pm,
 /// Reads the points of a point file into `points` with the project's strict readers: XYZ
 /// (`.xyz`, `.pwn`: a point per line, then any numbers, left out) or the vertices of an OFF,
 /// OBJ, STL or PLY file (faces, when there are any, are read and left out). The points are
-/// checked as a mesh's vertices are (finite, at most 1e100) and there must be at least three.
+/// checked as a mesh's vertices are (finite, at most 1e60) and there must be at least three.
 /// Returns an empty string on success, else one line naming the file, the place and the
 /// reason. Never throws; never modifies the file.
 template <class Point>

@@ -12,6 +12,7 @@
 /// `mesh_repair smooth --report`. The tool and the Python `smooth` both call it. See
 /// doc/mga_smooth.md.
 
+#include <CGAL/Mesh_repair/internal/finite_distance_traits.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/border_cycles.h>
 #include <CGAL/Mesh_repair/json_writer.h>
 #include <CGAL/Mesh_repair/mga_smooth.h>
@@ -136,7 +137,7 @@ double max_distance_to(const PolygonMesh& pm, const PolygonMesh& reference) {
       typename boost::property_map<PolygonMesh, CGAL::vertex_point_t>::const_type>::value_type;
   using Kernel = typename CGAL::Kernel_traits<Point>::Kernel;
   using Primitive = CGAL::AABB_face_graph_triangle_primitive<PolygonMesh>;
-  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
+  using Tree = Distance_tree<Kernel, Primitive>;
   Tree tree(faces(reference).first, faces(reference).second, reference);
   tree.accelerate_distance_queries();
   double largest = 0;

@@ -28,7 +28,20 @@ namespace internal {
 constexpr std::size_t max_unchecked_polygon_sides = 100;
 
 /// True when the projection of `corners` (a closed polygon, first point not repeated) along
-/// its Newell normal is a simple polygon; false too when the normal is zero or not finite.
+/// `normal` is a simple polygon; false too when `normal` is zero or not finite.
+template <class Point, class Vector>
+bool projection_is_simple(const std::vector<Point>& corners, const Vector& normal) {
+  using Kernel = typename CGAL::Kernel_traits<Point>::Kernel;
+  const double nx = CGAL::to_double(normal.x()), ny = CGAL::to_double(normal.y()),
+               nz = CGAL::to_double(normal.z());
+  if (!(std::isfinite(nx) && std::isfinite(ny) && std::isfinite(nz)) ||
+      (nx == 0 && ny == 0 && nz == 0))
+    return false;
+  const CGAL::Projection_traits_3<Kernel> projection(normal);
+  return CGAL::is_simple_2(corners.begin(), corners.end(), projection);
+}
+
+/// True when the projection of `corners` along its Newell normal is a simple polygon.
 template <class Point>
 bool projection_is_simple(const std::vector<Point>& corners) {
   using Kernel = typename CGAL::Kernel_traits<Point>::Kernel;
@@ -43,11 +56,7 @@ bool projection_is_simple(const std::vector<Point>& corners) {
     ny += (pz - qz) * (px + qx);
     nz += (px - qx) * (py + qy);
   }
-  if (!(std::isfinite(nx) && std::isfinite(ny) && std::isfinite(nz)) ||
-      (nx == 0 && ny == 0 && nz == 0))
-    return false;
-  const CGAL::Projection_traits_3<Kernel> projection(typename Kernel::Vector_3(nx, ny, nz));
-  return CGAL::is_simple_2(corners.begin(), corners.end(), projection);
+  return projection_is_simple(corners, typename Kernel::Vector_3(nx, ny, nz));
 }
 
 /// True when `corners` has more than `max_unchecked_polygon_sides` sides, lies in one plane

@@ -74,15 +74,17 @@ inline std::string precheck_mesh_file(const std::string& filename) {
   return precheck_file(filename);
 }
 
-/// The largest coordinate magnitude read: cubes of coordinate differences (volumes, the
-/// squared areas of quality measures) must stay finite in double precision. Real files stay
-/// far below (single-precision STL cannot exceed 3.4e38).
-constexpr double max_coordinate_magnitude = 1e100;
+/// The largest coordinate magnitude read: products of two squared lengths (CGAL's closest
+/// point on a triangle, squared areas of quality measures) must stay finite in double precision,
+/// with room for features smaller than the mesh. Real files stay far below (single-precision STL
+/// cannot exceed 3.4e38).
+constexpr double max_coordinate_magnitude = 1e60;
 
-/// The smallest extent (largest side of the bounding box) of points that are not all one point:
-/// below it the cubes of their differences underflow, and a repair of the same mesh scaled by
-/// 1e-120 decided otherwise than at scale 1 (more faces, more intersecting pairs).
-constexpr double min_extent = 1e-100;
+/// The smallest extent (largest side of the bounding box) of points that are not all one point,
+/// for the same reason: on meshes spanning 1e-90 to 1e-98 those products underflow to zero,
+/// CGAL's closest points on triangles become NaN and the exact predicates that compare them
+/// raise SIGFPE (found by fuzzing); at 1e-120 the repair decided otherwise than at scale 1.
+constexpr double min_extent = 1e-60;
 
 /// Every coordinate finite and at most `max_coordinate_magnitude`, and the points spanning zero or
 /// at least `min_extent` (a soup's vertices, or a point set's points); the reason when not.
@@ -91,23 +93,20 @@ std::string validate_points(const std::string& filename, const std::vector<Point
   std::array<double, 3> lo{}, hi{};
   for (std::size_t i = 0; i < points.size(); ++i) {
     const auto& p = points[i];
-    if (!std::isfinite(CGAL::to_double(p.x())) || !std::isfinite(CGAL::to_double(p.y())) ||
-        !std::isfinite(CGAL::to_double(p.z()))) {
+    const std::array<double, 3> c{CGAL::to_double(p.x()), CGAL::to_double(p.y()),
+                                  CGAL::to_double(p.z())};
+    if (!std::isfinite(c[0]) || !std::isfinite(c[1]) || !std::isfinite(c[2])) {
       std::ostringstream out;
       out << filename << ": vertex " << i << " has a non-finite coordinate (NaN or inf)";
       return out.str();
     }
-    const double largest =
-        std::max({std::abs(CGAL::to_double(p.x())), std::abs(CGAL::to_double(p.y())),
-                  std::abs(CGAL::to_double(p.z()))});
+    const double largest = std::max({std::abs(c[0]), std::abs(c[1]), std::abs(c[2])});
     if (largest > max_coordinate_magnitude) {
       std::ostringstream out;
       out << filename << ": vertex " << i << " has a coordinate of magnitude " << largest
-          << ", above 1e100: the cubes of its differences (volumes) would overflow";
+          << ", above 1e60: products of squared lengths would overflow";
       return out.str();
     }
-    const std::array<double, 3> c{CGAL::to_double(p.x()), CGAL::to_double(p.y()),
-                                  CGAL::to_double(p.z())};
     for (int k = 0; k < 3; ++k) {
       lo[k] = i == 0 ? c[k] : (std::min)(lo[k], c[k]);
       hi[k] = i == 0 ? c[k] : (std::max)(hi[k], c[k]);
@@ -117,8 +116,8 @@ std::string validate_points(const std::string& filename, const std::vector<Point
   if (extent > 0 && extent < min_extent) {
     std::ostringstream out;
     out << filename << ": the points span only " << extent
-        << " (the largest side of their bounding box), below 1e-100: the cubes of their "
-           "differences (volumes) would underflow; scale the mesh up";
+        << " (the largest side of their bounding box), below 1e-60: products of squared "
+           "lengths would underflow; scale the mesh up";
     return out.str();
   }
   return {};

@@ -13,6 +13,7 @@
 
 #include <CGAL/Mesh_repair/fill_holes.h>
 #include <CGAL/Mesh_repair/internal/bounded_pairs.h>
+#include <CGAL/Mesh_repair/internal/finite_distance_traits.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/border_cycles.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/patch_check.h>
 
@@ -433,9 +434,9 @@ class Region_replacer {
   }
 
   using Triangle = typename GeomTraits::Triangle_3;
-  using Triangle_tree = CGAL::AABB_tree<CGAL::AABB_traits<
+  using Triangle_tree = Distance_tree<
       GeomTraits,
-      CGAL::AABB_triangle_primitive<GeomTraits, typename std::vector<Triangle>::const_iterator>>>;
+      CGAL::AABB_triangle_primitive<GeomTraits, typename std::vector<Triangle>::const_iterator>>;
 
   /// The triangles of the surface as it is once the holes are filled (the patches of ties that
   /// fail later included: a slight advantage to the others), for `near_surface`.

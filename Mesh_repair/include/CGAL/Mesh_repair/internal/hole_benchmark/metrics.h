@@ -7,6 +7,7 @@
 // doc/bench_holes.md defines every number.
 
 #include <CGAL/Mesh_repair/internal/curvature_variation/measures.h>
+#include <CGAL/Mesh_repair/internal/finite_distance_traits.h>
 #include <CGAL/Mesh_repair/internal/hole_benchmark/punch.h>
 #include <CGAL/Mesh_repair/internal/hole_benchmark/types.h>
 #include <CGAL/Mesh_repair/quality.h>
@@ -97,7 +98,7 @@ class Truth_distance {
   using Kernel = typename CGAL::Kernel_traits<Point>::Kernel;
   using Truth_mesh = CGAL::Surface_mesh<Point>;
   using Primitive = CGAL::AABB_face_graph_triangle_primitive<Truth_mesh>;
-  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
+  using Tree = Distance_tree<Kernel, Primitive>;
 
   Truth_distance(const Truth_mesh& truth, const std::function<double(const Point&)>& exact)
       : exact_(exact) {

@@ -9,6 +9,7 @@
 // closest point of the guide (AABB tree).
 
 #include <CGAL/Mesh_repair/internal/core_inline.h>
+#include <CGAL/Mesh_repair/internal/finite_distance_traits.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/border_cycles.h>
 
 #include <CGAL/AABB_traits.h>
@@ -25,7 +26,7 @@ namespace internal {
 class Guide_surface {
   using Triangle = Epick::Triangle_3;
   using Primitive = CGAL::AABB_triangle_primitive<Epick, std::vector<Triangle>::const_iterator>;
-  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Epick, Primitive>>;
+  using Tree = Distance_tree<Epick, Primitive>;
 
  public:
   /// Triangulates the closed polygon `border` (first point not repeated).

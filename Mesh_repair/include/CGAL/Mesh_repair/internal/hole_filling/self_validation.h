@@ -13,6 +13,7 @@
 
 #include <CGAL/Mesh_repair/hole_filling/fill_options.h>
 #include <CGAL/Mesh_repair/hole_filling/fill_result.h>
+#include <CGAL/Mesh_repair/internal/finite_distance_traits.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/local_region.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
@@ -218,7 +219,7 @@ double rms_distance_to_patch(
   using Mesh = CGAL::Surface_mesh<Point>;
   using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
   using Kernel = typename CGAL::Kernel_traits<Point>::Kernel;
-  CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>> tree(patch.begin(), patch.end(), mesh);
+  Distance_tree<Kernel, Primitive> tree(patch.begin(), patch.end(), mesh);
   double sum = 0;
   for (const Point& p : truth) sum += CGAL::to_double(tree.squared_distance(p));
   return std::sqrt(sum / double(std::max<std::size_t>(1, truth.size())));
