@@ -595,6 +595,17 @@ TEST(AutomaticRepair, AnOpenEndLyingOnAnotherPartIsClosedAndTheContactKept) {
   for (const Point& p : wall) EXPECT_TRUE(output.count(p)) << p;
 }
 
+/// Every hole filled, the mesh closed and valid, still two parts, and no patch meeting its own
+/// part (the contacts between the parts are kept).
+void expect_two_closed_parts_no_patch_meeting_its_own(const Mesh& mesh,
+                                                      const MR::Repair_result& result) {
+  EXPECT_EQ(result.holes.failed, 0u);
+  EXPECT_TRUE(CGAL::is_closed(mesh));
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  EXPECT_EQ(support::connected_components(mesh), 2u);
+  EXPECT_EQ(result.self_intersections_in_patches, 0u);
+}
+
 // A tube slid over a plank (a baluster reaching into a rail, as in Debian's railing models): its
 // upper end, inside the plank's extent, flares into a skirt of `skirt_radius` x the tube's radius
 // that folds down by `skirt_drop`, and the skirt's outer edge is the hole. Every patch of that
@@ -649,11 +660,7 @@ TEST(AutomaticRepair, AFoldedOutEndReachingIntoAnotherPartIsGrownAndClosedAgains
   ASSERT_GT(self_intersection_count(mesh), 0u);  // the wall crosses the plank
 
   const auto result = MR::automatic_repair(mesh);
-  EXPECT_EQ(result.holes.failed, 0u);
-  EXPECT_TRUE(CGAL::is_closed(mesh));
-  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
-  EXPECT_EQ(support::connected_components(mesh), 2u);
-  EXPECT_EQ(result.self_intersections_in_patches, 0u);
+  expect_two_closed_parts_no_patch_meeting_its_own(mesh, result);
   EXPECT_EQ(result.status(), MR::Repair_status::complete_except_kept);
   // Neither the growth with the plank an obstacle nor the fill against it without growth closed
   // it; growing by the skirt's ring against the plank did.
@@ -689,6 +696,56 @@ TEST(AutomaticRepair, AGrownHoleWhosePatchWouldBeFarFromTheRemovedFacesIsLeftOpe
   ASSERT_NE(grown_against, nullptr);
   EXPECT_GE(grown_against->count("patches_too_far"), 1.0);
   EXPECT_EQ(grown_against->count("faces_removed"), 0.0);
+}
+
+// A table top open underneath, a leg reaching in through the opening without touching the top
+// (a furniture model's slab whose bottom face is missing): the parts are apart, but every patch
+// of the opening crosses the leg. The opening is closed with the leg no obstacle, and the new
+// contact is kept like the input's contacts; with `merge_intersecting_solids` the two closed
+// parts become one solid.
+Mesh table_top_open_underneath_with_a_leg() {
+  Mesh mesh, leg;
+  MR::make_subdivided_cube<Mesh, Point>(mesh, 2.0, 4);  // the top: [0, 2]^2 x [0, 0.4]
+  for (auto v : mesh.vertices()) {
+    const Point& p = mesh.point(v);
+    mesh.point(v) = Point(p.x(), p.y(), 0.2 * p.z());
+  }
+  support::remove_faces_in_plane_z(mesh, 0);           // its underside
+  MR::make_subdivided_cube<Mesh, Point>(leg, 2.0, 2);  // the leg: [0.8, 1.2]^2 x [-1, 0.2]
+  for (auto v : leg.vertices()) {
+    const Point& p = leg.point(v);
+    leg.point(v) = Point(0.8 + 0.2 * p.x(), 0.8 + 0.2 * p.y(), -1 + 0.6 * p.z());
+  }
+  CGAL::copy_face_graph(leg, mesh);
+  return mesh;
+}
+
+TEST(AutomaticRepair, AnOpeningThatAnotherPartReachesThroughIsClosedAndTheContactKept) {
+  Mesh mesh = table_top_open_underneath_with_a_leg();
+  ASSERT_EQ(count_border_cycles(mesh), 1u);
+  ASSERT_EQ(self_intersection_count(mesh), 0u);  // the leg touches nothing
+  ASSERT_EQ(support::connected_components(mesh), 2u);
+  const double top_area = CGAL::Polygon_mesh_processing::area(mesh);
+
+  const auto result = MR::automatic_repair(mesh);
+  expect_two_closed_parts_no_patch_meeting_its_own(mesh, result);
+  EXPECT_GT(result.self_intersections_between_components, 0u);  // the leg crosses the new bottom
+  EXPECT_EQ(result.status(), MR::Repair_status::complete_except_kept);
+  const auto* against = find_step(result, "failed holes filled against other parts");
+  ASSERT_NE(against, nullptr);
+  EXPECT_EQ(against->count("filled"), 1.0);
+  // The bottom is flat (a missing planar face): it adds the 2 x 2 square to the area.
+  EXPECT_NEAR(CGAL::Polygon_mesh_processing::area(mesh), top_area + 4.0, 1e-9);
+
+  Mesh merged = table_top_open_underneath_with_a_leg();
+  const auto united = MR::automatic_repair(merged, MR::parameters::merge_intersecting_solids(true));
+  EXPECT_EQ(united.status(), MR::Repair_status::complete)
+      << (united.remaining.empty() ? "" : united.remaining.front());
+  EXPECT_EQ(support::connected_components(merged), 1u);
+  EXPECT_EQ(self_intersection_count(merged), 0u);
+  EXPECT_TRUE(CGAL::is_closed(merged));
+  // The union: the top (2 x 2 x 0.4) and the leg's part below it (0.4 x 0.4 x 1).
+  EXPECT_NEAR(CGAL::Polygon_mesh_processing::volume(merged), 1.6 + 0.16, 1e-6);
 }
 
 // Two interpenetrating spheres and a third apart, with `merge_intersecting_solids`: the two
@@ -819,23 +876,27 @@ TEST(AutomaticRepair, HolesWithFoldedBordersAreGrownAndFilled) {
     EXPECT_NEAR(std::sqrt(CGAL::squared_distance(mesh.point(v), Point(0, 0, 0))), 1.0, 0.05);
 }
 
-// A hole that no growth can fill gets its removed faces back: nothing is lost.
+// A hole that no growth can fill gets its removed faces back: nothing is lost. (The second
+// sphere's hole, whose every patch crosses the first sphere's patch, is then closed with the
+// other sphere no obstacle, step "failed holes filled against other parts".)
 TEST(AutomaticRepair, AGrownHoleThatStaysOpenGetsItsFacesBack) {
   Mesh mesh = overlapping_spheres_with_facing_holes();
   const std::size_t faces_before = mesh.number_of_faces();
   const auto result = MR::automatic_repair(mesh, MR::parameters::repair_self_intersections(false));
-  ASSERT_GE(result.holes.failed, 1u);
   const auto* grown = find_step(result, "failed holes grown");
   ASSERT_NE(grown, nullptr);
+  EXPECT_EQ(grown->count("still_failed"), 1.0);
   EXPECT_EQ(grown->count("faces_not_restored"), 0.0);
   EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
   // Faces of the input + the patches kept - the faces of replaced regions: those of the regions
   // put back are all there.
   const auto* filling = find_step(result, "hole filling");
+  const auto* against = find_step(result, "failed holes filled against other parts");
   ASSERT_NE(filling, nullptr);
-  EXPECT_EQ(double(mesh.number_of_faces()), double(faces_before) + filling->count("faces_added") +
-                                                grown->count("faces_added") -
-                                                grown->count("faces_removed"));
+  ASSERT_NE(against, nullptr);
+  EXPECT_EQ(double(mesh.number_of_faces()),
+            double(faces_before) + filling->count("faces_added") + grown->count("faces_added") -
+                grown->count("faces_removed") + against->count("faces_added"));
   EXPECT_EQ(count_border_cycles(mesh), result.holes.failed);
 }
 
@@ -921,14 +982,31 @@ TEST(FillHoles, APatchMeetingAnotherPartOfTheMeshIsRolledBack) {
   }
 }
 
-TEST(AutomaticRepair, PatchesNeverCreateSelfIntersectionsAndUnfillableHolesAreListed) {
+// Two spheres overlapping where their holes face each other: every patch of the second hole
+// crosses the first one's patch, so the second is closed with the other sphere no obstacle. No
+// patch meets its own sphere; the two closed spheres overlap, which is kept like any contact
+// between parts, or united with `merge_intersecting_solids`.
+TEST(AutomaticRepair, FacingHolesOfOverlappingSpheresAreClosedAndTheOverlapKept) {
   Mesh mesh = overlapping_spheres_with_facing_holes();
   const auto result = MR::automatic_repair(mesh);
   EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
-  EXPECT_EQ(result.self_intersections_output, 0u);
-  EXPECT_EQ(result.holes.failed, 1u);
-  EXPECT_FALSE(result.complete());
-  EXPECT_EQ(result.status(), MR::Repair_status::incomplete);
+  EXPECT_TRUE(CGAL::is_closed(mesh));
+  EXPECT_EQ(result.holes.failed, 0u);
+  EXPECT_EQ(result.self_intersections_in_patches, 0u);
+  EXPECT_GT(result.self_intersections_output, 0u);
+  EXPECT_EQ(result.self_intersections_between_components, result.self_intersections_output);
+  EXPECT_EQ(result.status(), MR::Repair_status::complete_except_kept);
+
+  Mesh merged = overlapping_spheres_with_facing_holes();
+  const auto united = MR::automatic_repair(merged, MR::parameters::merge_intersecting_solids(true));
+  EXPECT_EQ(united.status(), MR::Repair_status::complete)
+      << (united.remaining.empty() ? "" : united.remaining.front());
+  EXPECT_EQ(support::connected_components(merged), 1u);
+  EXPECT_EQ(self_intersection_count(merged), 0u);
+  // Two unit balls 1.9 apart: the union, within the faceting of the spheres and the patches.
+  const double d = 1.9, pi = std::acos(-1.0);
+  const double lens = pi * (4 + d) * (2 - d) * (2 - d) / 12;
+  EXPECT_NEAR(CGAL::Polygon_mesh_processing::volume(merged), 8 * pi / 3 - lens, 0.05 * 8 * pi / 3);
 }
 
 TEST(AutomaticRepair, RealScansWithHolesBecomeClosed) {

@@ -7,6 +7,7 @@
 #include <CGAL/Mesh_repair/hole_benchmark.h>
 #include <CGAL/Mesh_repair/hole_filling/advancing_front.h>
 #include <CGAL/Mesh_repair/io.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh.h>
 #include <gtest/gtest.h>
 
@@ -826,6 +827,58 @@ TEST(FillHoles, AHemisphereSizedHoleIsStillFilled) {
   EXPECT_EQ(result.sheet_borders, 0u);
   EXPECT_EQ(result.filled, 1u);
   EXPECT_TRUE(closed_valid_and_clean(mesh));
+}
+
+/// The cube [0, 2]^3 of 4 x 4 grids without the faces of its bottom, lowered by `dip` at one
+/// bottom corner (0: the border is planar).
+Mesh box_open_underneath(double dip) {
+  Mesh box;
+  MR::make_subdivided_cube<Mesh, Point>(box, 2.0, 4);
+  support::remove_faces_in_plane_z(box, 0);
+  for (auto v : box.vertices())
+    if (box.point(v) == Point(0, 0, 0)) box.point(v) = Point(0, 0, -dip);
+  return box;
+}
+
+// A box without its bottom (a CAD part that lost a face): the border lies in one plane and the
+// walls leave it at 90 degrees. Every faired candidate continues the walls into a bowl below the
+// box; the flat membrane comes first and gives the box back: its area and volume exactly.
+TEST(FillHoles, AMissingPlanarFaceOfABoxIsFilledFlat) {
+  Mesh box = box_open_underneath(0);
+  const MR::Fill_result result = MR::fill_holes(box);
+  ASSERT_EQ(result.filled, 1u);
+  EXPECT_TRUE(closed_valid_and_clean(box));
+  EXPECT_EQ(result.holes[0].used, MR::Fill_method::liepa);
+  EXPECT_TRUE(note_starts_with(result.holes[0], "a missing planar face"));
+  EXPECT_NEAR(CGAL::Polygon_mesh_processing::area(box), 24.0, 1e-9);
+  EXPECT_NEAR(CGAL::Polygon_mesh_processing::volume(box), 8.0, 1e-9);
+
+  // One corner lowered by a thousandth: not planar, so the validated order, whose faired patch
+  // bulges below the box.
+  Mesh bent = box_open_underneath(1e-3);
+  const MR::Fill_result validated = MR::fill_holes(bent);
+  ASSERT_EQ(validated.filled, 1u);
+  EXPECT_TRUE(note_starts_with(validated.holes[0], "self-validation"));
+  EXPECT_GT(CGAL::Polygon_mesh_processing::volume(bent), 8.1);
+}
+
+// The reach of a patch: a pyramid over the square border (+-1, +-1, 0), its apex the one new
+// vertex, reaches height / sqrt(2) border radii; a bag (height 5) is past the limit, a cap not.
+TEST(FillHoles, APatchReachIsMeasuredInBorderRadii) {
+  for (const double height : {1.0, 5.0}) {
+    Mesh mesh;
+    const auto a = mesh.add_vertex(Point(-1, -1, 0)), b = mesh.add_vertex(Point(1, -1, 0)),
+               c = mesh.add_vertex(Point(1, 1, 0)), d = mesh.add_vertex(Point(-1, 1, 0)),
+               apex = mesh.add_vertex(Point(0, 0, height));
+    MR::Fill_patch<Mesh> patch;
+    patch.faces = {mesh.add_face(a, b, apex), mesh.add_face(b, c, apex), mesh.add_face(c, d, apex),
+                   mesh.add_face(d, a, apex)};
+    patch.vertices = {apex};
+    const double reach =
+        MR::internal::patch_reach_in_border_radii(mesh, patch, get(CGAL::vertex_point, mesh));
+    EXPECT_NEAR(reach, height / std::sqrt(2.0), 1e-12);
+    EXPECT_EQ(reach > MR::internal::max_patch_reach_in_border_radii, height > 3.0 * std::sqrt(2.0));
+  }
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // The kinds of file real users bring (ctest label `realworld`), each made here: two quads sharing
 // three vertices, closed shells touching at coincident but distinct corners (a face, an edge, a
-// point), a cube whose faces use a duplicated vertex, open meshes with holes, an open sheet.
+// point), a cube whose faces use a duplicated vertex, open meshes with holes, an open sheet, a
+// part open where another reaches in.
 // Each goes through `mesh_repair repair` as a user runs it; the output is read back with CGAL's
 // own reader (coincident points merged) and the report must say what that reading shows, with
 // the exit status of its status (written_file_check.h).
@@ -252,6 +253,33 @@ TEST(RealWorld, OverlappingSolidsAreKeptAsSeparateSolids) {
   EXPECT_TRUE(run.reading.closed && run.reading.valid);
   EXPECT_EQ(repair_member(run, "status"), "complete_except_kept");
   EXPECT_NE(repair_member(run, "self_intersections_between_components"), "0") << run.report;
+}
+
+// A table top modelled without its underside, a leg reaching in through the opening without
+// touching the top (sweethome3d's furniture has such parts): every patch of the opening crosses
+// the leg. The opening is closed flat, the leg's crossing kept as a contact between separate
+// solids (exit 3); with --merge-intersecting-solids the two are one solid (exit 0).
+TEST(RealWorld, AnOpeningThatAnotherPartReachesThroughIsClosed) {
+  Soup table = cube(0, 0, 0, 2);
+  for (auto& p : table.points) p[2] *= 0.2;                         // the top: [0, 2]^2 x [0, 0.4]
+  table.faces.erase(table.faces.begin(), table.faces.begin() + 2);  // its underside
+  Soup leg = cube(0.8, 0.8, 0, 0.4);
+  for (auto& p : leg.points) p[2] = -1 + 3 * p[2];  // [0.8, 1.2]^2 x [-1, 0.2]
+  table.add(leg);
+
+  const Repair_run kept = repair("table_open_underneath", table);
+  EXPECT_EQ(kept.status, 3) << kept.out;
+  EXPECT_TRUE(kept.reading.closed && kept.reading.valid);
+  EXPECT_EQ(repair_member(kept, "status"), "complete_except_kept");
+  EXPECT_EQ(repair_member(kept, "holes_filled"), "1") << kept.report;
+  EXPECT_NE(repair_member(kept, "self_intersections_between_components"), "0") << kept.report;
+
+  const Repair_run merged =
+      repair("table_open_underneath_merged", table, "--merge-intersecting-solids");
+  EXPECT_EQ(merged.status, 0) << merged.out;
+  EXPECT_TRUE(merged.reading.closed && merged.reading.valid);
+  EXPECT_EQ(repair_member(merged, "status"), "complete");
+  EXPECT_EQ(repair_member(merged, "self_intersections_output"), "0") << merged.report;
 }
 
 /// The outer surface of a union of unit cells (integer corners), two outward triangles per

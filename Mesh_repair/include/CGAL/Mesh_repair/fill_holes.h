@@ -25,6 +25,7 @@
 #include <CGAL/Mesh_repair/internal/hole_filling/open_sheets.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/patch_check.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/pinches.h>
+#include <CGAL/Mesh_repair/internal/hole_filling/planar_borders.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/ring_holes.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/self_validation.h>
 #include <CGAL/Mesh_repair/internal/mesh_counts.h>
@@ -66,6 +67,22 @@ std::string seconds_text(Duration duration) {
   std::snprintf(text, sizeof text, "%.3g s", std::chrono::duration<double>(duration).count());
   return text;
 }
+
+/// "2.4": a ratio for the reports, `decimals` decimals.
+inline std::string fixed_text(double value, int decimals) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.*f", decimals, value);
+  return text;
+}
+
+/// A patch whose new vertices reach farther than this from the centroid of its border, in
+/// border radii (`patch_reach_in_border_radii`), is rejected. No surface a border predicts
+/// reaches that far: a cap on a round border reaches 1, the front's regrown tip of a limb cut
+/// across (punched holes of 0.12 diagonal on libcgal-demo's elephant and femur) 2.2-2.3. A front
+/// that must go around something standing in its hole grows a bag instead: 3.4-4.1 radii on
+/// holes of 5-15 edges of libcgal-demo's b9_mesh, twice a Debian cardboard box's height below a
+/// slot of its lid (doc/fill_holes.md).
+constexpr double max_patch_reach_in_border_radii = 3.0;
 
 inline Hole_fill_report method_not_available(Fill_method method) {
   Hole_fill_report report;
@@ -455,7 +472,8 @@ class Hole_filler {
   /// The methods a sequence tries on `group`, in order. `self_validated` ranks the faired
   /// methods by their error on the hole enlarged by `self_validation_rings` rings (on a copy),
   /// then the front; ring holes keep the default order (the enlarged hole would merge the
-  /// islands).
+  /// islands). A missing planar face (`is_creased_planar_border`) is filled flat first: the
+  /// enlarged hole reaches up the walls, where the faired candidates continue them into a bowl.
   std::vector<Fill_candidate> sequence(const Group& group, Fill_method method,
                                        std::vector<std::string>& notes) const {
     if (method == Fill_method::automatic) return automatic_sequence();
@@ -470,6 +488,15 @@ class Hole_filler {
                       std::to_string(max_faired_patch_triangles) +
                       "): only Liepa's C0 fairing and its coarser stages are tried");
       return {};
+    } else if (group.islands.empty() && is_creased_planar_border(pm_, vpm_, traits_, group.outer)) {
+      // No front: where the flat membrane fails, something crosses the plane, and a front that
+      // goes around it grows a bag (doc/fill_holes.md, "A missing planar face").
+      notes.push_back(
+          "a missing planar face: the border lies in one plane and every face along it leaves the "
+          "plane at a crease; the flat membrane (Liepa C0) first, then the faired methods in the "
+          "default order, no advancing front");
+      ranked.insert(ranked.begin(), Fill_candidate{Fill_method::liepa, 0});
+      return ranked;
     } else if (group.islands.empty()) {
       std::string note;
       const auto fill_one = [this](const Fill_candidate& candidate, auto& mesh, auto border,
@@ -551,6 +578,15 @@ class Hole_filler {
     if (report.filled && !closed(patch)) {
       report.filled = false;
       report.failure = "the patch leaves border edges open";
+    }
+    if (report.filled && check_) {
+      const double reach = patch_reach_in_border_radii(pm_, patch, vpm_);
+      if (reach > max_patch_reach_in_border_radii) {
+        report.filled = false;
+        report.failure = "the patch reaches " + fixed_text(reach, 1) +
+                         " border radii from the border's centre (at most " +
+                         fixed_text(max_patch_reach_in_border_radii, 1) + ")";
+      }
     }
     if (report.filled && check_ && !self_checked) {
       const std::size_t pairs =

@@ -693,12 +693,15 @@ inline Fill_options other_parts_no_obstacle(Fill_options fill) {
   return fill;
 }
 
-/// The holes still open, of parts that already meet another part, are filled once more with the
-/// faces of other parts no obstacle (`Fill_options::other_parts_are_obstacles`): a tube trimmed
-/// against a post has its open end on the post's face, where every patch touches the post. The
-/// patch still may not meet its own part nor lie on another part's patch; the contact is
-/// kept like any other (counted in the verification as `pairs_between_components_added`, listed in
-/// `kept`), and `merge_intersecting_solids` can then unite the closed parts.
+/// The holes still open are filled once more with the faces of other parts no obstacle
+/// (`Fill_options::other_parts_are_obstacles`): a tube trimmed against a post has its open end on
+/// the post's face, and a table top open underneath has the legs reaching in through its hole;
+/// every patch meets the other part. Every method already failed with that part an obstacle, the
+/// minimal-area triangulation included, so the other part lies across the hole's span, not
+/// beside it: the contact is the input's, closed or not. The patch still may not meet its own
+/// part nor lie on another part's patch; the contact is kept like any other (counted in the
+/// verification as `pairs_between_components_added`, listed in `kept`), and
+/// `merge_intersecting_solids` can then unite the closed parts.
 template <class PolygonMesh, class VertexPointMap, class GeomTraits, class Point>
 std::vector<bool> fill_meeting_other_parts(PolygonMesh& pm, VertexPointMap vpm,
                                            const GeomTraits& traits, const Repair_options& options,
@@ -712,21 +715,15 @@ std::vector<bool> fill_meeting_other_parts(PolygonMesh& pm, VertexPointMap vpm,
       failed_at.emplace(border_points[k], k);
   if (failed_at.empty()) return still_failed;
   Step_timer timer(result, "failed holes filled against other parts", visitor);
-  // Only parts that already meet another part (an assembly): a patch must not create the first
-  // contact between two parts that were apart. A mesh of one part needs no enumeration.
   const auto component = face_components(pm);
   const bool one_part = std::all_of(component.begin(), component.end(),
                                     [](const auto& entry) { return entry.second == 0; });
   if (one_part) return still_failed;
-  const std::unordered_set<std::size_t> in_contact = parts_in_contact(
-      pm, vpm, traits, component,
-      std::unordered_set<typename boost::graph_traits<PolygonMesh>::face_descriptor>{});
   const auto groups = hole_groups(pm, vpm, options.fill.detect_ring_holes);
   std::vector<typename decltype(groups)::value_type> retried;
   std::vector<std::size_t> hole_of;
   for (const auto& group : groups) {
-    const auto part = component.find(face(opposite(group.outer, pm), pm));
-    if (part == component.end() || !in_contact.count(part->second)) continue;
+    if (!component.count(face(opposite(group.outer, pm), pm))) continue;
     for (auto h : halfedges_around_face(group.outer, pm)) {
       const auto found = failed_at.find(get(vpm, target(h, pm)));
       if (found == failed_at.end()) continue;
@@ -736,15 +733,15 @@ std::vector<bool> fill_meeting_other_parts(PolygonMesh& pm, VertexPointMap vpm,
       break;
     }
   }
-  timer.count("parts_in_contact", double(in_contact.size()));
   if (retried.empty()) return still_failed;
   const Fill_options fill = other_parts_no_obstacle(options.fill);
   std::vector<Fill_patch<PolygonMesh>> patches;
   const Fill_result again =
       fill_hole_groups(pm, vpm, traits, retried, patches, fill, visitor, false);
-  std::size_t filled = 0;
+  std::size_t filled = 0, faces_added = 0;
   for (std::size_t j = 0; j < retried.size(); ++j) {
     if (!again.holes[j].filled) continue;
+    faces_added += again.holes[j].faces_created;
     Hole_fill_report& hole = result.holes.holes[hole_of[j]];
     hole.notes.push_back(
         "filled by " + std::string(to_string(again.holes[j].used)) +
@@ -759,6 +756,7 @@ std::vector<bool> fill_meeting_other_parts(PolygonMesh& pm, VertexPointMap vpm,
   if (again.cancelled) result.cancelled = true;
   timer.count("holes", double(retried.size()));
   timer.count("filled", double(filled));
+  timer.count("faces_added", double(faces_added));
   for (std::size_t j = 0; j < retried.size(); ++j)
     still_failed[hole_of[j]] = !again.holes[j].filled;
   return still_failed;

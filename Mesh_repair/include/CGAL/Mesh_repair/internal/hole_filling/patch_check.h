@@ -9,6 +9,7 @@
 
 #include <CGAL/Mesh_repair/hole_filling/fill_result.h>
 #include <CGAL/Mesh_repair/internal/bounded_pairs.h>
+#include <CGAL/Mesh_repair/internal/vec3.h>
 
 #include <CGAL/Bbox_3.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
@@ -362,6 +363,30 @@ std::size_t patch_intersections_with_mesh(const PolygonMesh& pm,
   range.insert(range.end(), near.begin(), near.end());
   return pairs_involving_patch(range, pm, patch, vpm, traits) +
          coplanar_overlaps(pm, patch, other_parts_patches, vpm, traits);
+}
+
+/// How far the patch's new vertices reach from its border, in border radii: the largest distance
+/// of a new vertex to the centroid of the border's vertices (the vertices of patch faces that
+/// the patch did not create), over the largest distance of a border vertex to it. A cap on a
+/// round border reaches 1; 0 for a patch without new vertices or a border of one point.
+template <class PolygonMesh, class VertexPointMap>
+double patch_reach_in_border_radii(const PolygonMesh& pm, const Fill_patch<PolygonMesh>& patch,
+                                   VertexPointMap vpm) {
+  using vertex_descriptor = typename boost::graph_traits<PolygonMesh>::vertex_descriptor;
+  const std::unordered_set<vertex_descriptor> created(patch.vertices.begin(), patch.vertices.end());
+  std::unordered_set<vertex_descriptor> border;
+  for (auto f : patch.faces)
+    for (vertex_descriptor v : vertices_around_face(halfedge(f, pm), pm))
+      if (!created.count(v)) border.insert(v);
+  if (created.empty() || border.empty()) return 0;
+  const auto at = [&](vertex_descriptor v) { return to_array(get(vpm, v)); };
+  Vec3 centre;
+  for (vertex_descriptor v : border) centre += at(v);
+  centre = centre * (1.0 / double(border.size()));
+  double radius = 0, reach = 0;
+  for (vertex_descriptor v : border) radius = std::max(radius, norm(at(v) - centre));
+  for (vertex_descriptor v : created) reach = std::max(reach, norm(at(v) - centre));
+  return radius > 0 ? reach / radius : 0;
 }
 
 }  // namespace internal
