@@ -734,6 +734,10 @@ TEST(AutomaticRepair, AnOpeningThatAnotherPartReachesThroughIsClosedAndTheContac
   const auto* against = find_step(result, "failed holes filled against other parts");
   ASSERT_NE(against, nullptr);
   EXPECT_EQ(against->count("filled"), 1.0);
+  // The hole's record counts the patch that closed it, as the step does.
+  ASSERT_EQ(result.holes.holes.size(), 1u);
+  EXPECT_GT(result.holes.holes[0].faces_created, 0u);
+  EXPECT_EQ(double(result.holes.holes[0].faces_created), against->count("faces_added"));
   // The bottom is flat (a missing planar face): it adds the 2 x 2 square to the area.
   EXPECT_NEAR(CGAL::Polygon_mesh_processing::area(mesh), top_area + 4.0, 1e-9);
 

@@ -749,6 +749,9 @@ std::vector<bool> fill_meeting_other_parts(PolygonMesh& pm, VertexPointMap vpm,
     hole.failure.clear();
     hole.filled = true;
     hole.used = again.holes[j].used;
+    hole.faces_created = again.holes[j].faces_created;
+    hole.vertices_created = again.holes[j].vertices_created;
+    hole.seconds += again.holes[j].seconds;
     --result.holes.failed;
     ++result.holes.filled;
     ++filled;
