@@ -595,6 +595,15 @@ TEST(AutomaticRepair, AnOpenEndLyingOnAnotherPartIsClosedAndTheContactKept) {
   for (const Point& p : wall) EXPECT_TRUE(output.count(p)) << p;
 }
 
+/// `automatic_repair` with `merge_intersecting_solids` made one solid: complete, one part, no
+/// intersecting pair.
+void expect_one_clean_solid(const Mesh& mesh, const MR::Repair_result& result) {
+  EXPECT_EQ(result.status(), MR::Repair_status::complete)
+      << (result.remaining.empty() ? "" : result.remaining.front());
+  EXPECT_EQ(support::connected_components(mesh), 1u);
+  EXPECT_EQ(self_intersection_count(mesh), 0u);
+}
+
 /// Every hole filled, the mesh closed and valid, still two parts, and no patch meeting its own
 /// part (the contacts between the parts are kept).
 void expect_two_closed_parts_no_patch_meeting_its_own(const Mesh& mesh,
@@ -743,10 +752,7 @@ TEST(AutomaticRepair, AnOpeningThatAnotherPartReachesThroughIsClosedAndTheContac
 
   Mesh merged = table_top_open_underneath_with_a_leg();
   const auto united = MR::automatic_repair(merged, MR::parameters::merge_intersecting_solids(true));
-  EXPECT_EQ(united.status(), MR::Repair_status::complete)
-      << (united.remaining.empty() ? "" : united.remaining.front());
-  EXPECT_EQ(support::connected_components(merged), 1u);
-  EXPECT_EQ(self_intersection_count(merged), 0u);
+  expect_one_clean_solid(merged, united);
   EXPECT_TRUE(CGAL::is_closed(merged));
   // The union: the top (2 x 2 x 0.4) and the leg's part below it (0.4 x 0.4 x 1).
   EXPECT_NEAR(CGAL::Polygon_mesh_processing::volume(merged), 1.6 + 0.16, 1e-6);
@@ -1003,10 +1009,7 @@ TEST(AutomaticRepair, FacingHolesOfOverlappingSpheresAreClosedAndTheOverlapKept)
 
   Mesh merged = overlapping_spheres_with_facing_holes();
   const auto united = MR::automatic_repair(merged, MR::parameters::merge_intersecting_solids(true));
-  EXPECT_EQ(united.status(), MR::Repair_status::complete)
-      << (united.remaining.empty() ? "" : united.remaining.front());
-  EXPECT_EQ(support::connected_components(merged), 1u);
-  EXPECT_EQ(self_intersection_count(merged), 0u);
+  expect_one_clean_solid(merged, united);
   // Two unit balls 1.9 apart: the union, within the faceting of the spheres and the patches.
   const double d = 1.9, pi = std::acos(-1.0);
   const double lens = pi * (4 + d) * (2 - d) * (2 - d) / 12;
