@@ -12,6 +12,17 @@ while (($#)); do
     *) cmake_args+=("$1"); shift ;;
   esac
 done
-cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE=${BUILD_TYPE:-Release} "${cmake_args[@]}" >/dev/null
+# Ninja for a new build folder when it is installed (scripts/setup.sh installs it): unlike make, it
+# compiles a target's units without waiting for the libraries the target links, so both
+# processors stay busy to the end (a clean -j2 build of the tool and the suites: 852 s with make,
+# one processor idle for about 200 s of it; doc/benchmarks.md, "Compile cost"). A folder already
+# configured keeps its generator (CMake refuses to change it), and a -G of the caller wins.
+generator_args=()
+if [[ ! -f "$build_dir/CMakeCache.txt" && " ${cmake_args[*]} " != *" -G"* ]] &&
+   command -v ninja >/dev/null; then
+  generator_args=(-G Ninja)
+fi
+cmake -S "$root" -B "$build_dir" "${generator_args[@]}" -DCMAKE_BUILD_TYPE=${BUILD_TYPE:-Release} \
+  "${cmake_args[@]}" >/dev/null
 jobs=${MESH_REPAIR_JOBS:-$(nproc)}
 cmake --build "$build_dir" -j "$jobs" "${target_args[@]}"

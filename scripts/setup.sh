@@ -8,7 +8,7 @@
 #   --with-fuzz    adds clang-14 and libclang-rt-14-dev for the libFuzzer targets (scripts/fuzz.sh)
 set -euo pipefail
 
-packages=(cmake g++ make libcgal-dev libopenmesh-dev libeigen3-dev libboost-dev libgmp-dev libmpfr-dev
+packages=(cmake g++ make ninja-build libcgal-dev libopenmesh-dev libeigen3-dev libboost-dev libgmp-dev libmpfr-dev
           libtbb-dev libgtest-dev googletest libbenchmark-dev)
 for arg in "$@"; do
   case "$arg" in
