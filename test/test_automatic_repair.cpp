@@ -879,8 +879,21 @@ TEST(AutomaticRepair, HolesWithFoldedBordersAreGrownAndFilled) {
   EXPECT_EQ(grown->count("still_failed"), 0.0);
   EXPECT_GT(grown->count("faces_removed"), 0.0);
   ASSERT_EQ(result.holes.holes.size(), 1u);
-  EXPECT_TRUE(result.holes.holes[0].filled);
-  ASSERT_FALSE(result.holes.holes[0].notes.empty());
+  const auto& hole = result.holes.holes[0];
+  EXPECT_TRUE(hole.filled);
+  ASSERT_FALSE(hole.notes.empty());
+  // The hole's record holds the patch that closed it, as the step counts it: the faces now are
+  // the input's, less those the growth removed, plus the patch.
+  EXPECT_EQ(double(hole.faces_created), grown->count("faces_added"));
+  EXPECT_GT(hole.faces_created, 0u);
+  EXPECT_EQ(mesh.number_of_faces(),
+            faces_before - std::size_t(grown->count("faces_removed")) + hole.faces_created);
+  const std::string said = "filled after removing the " +
+                           std::to_string(std::size_t(grown->count("faces_removed"))) + " face(s)";
+  EXPECT_TRUE(std::any_of(hole.notes.begin(), hole.notes.end(), [&](const std::string& note) {
+    return note.find(said) != std::string::npos;
+  })) << hole.notes.back();
+  EXPECT_TRUE(hole.failure.empty());
   // The patch follows the sphere.
   for (auto v : mesh.vertices())
     EXPECT_NEAR(std::sqrt(CGAL::squared_distance(mesh.point(v), Point(0, 0, 0))), 1.0, 0.05);

@@ -49,6 +49,12 @@ struct Region_replacement_report {
   std::size_t regions_too_large =
       0;                       ///< left alone: too large a share of their part's faces and area
   std::vector<bool> replaced;  ///< per region given, in the caller's order
+  /// Per region given, for the replaced ones: the faces and vertices of the patches of the holes
+  /// its removal opened, and the faces removed, all of the merged regions it succeeded or failed
+  /// with (`regions_merged` of them, itself included), so that a caller records them per region.
+  std::vector<std::size_t> region_faces_added, region_vertices_added, region_faces_removed,
+      regions_merged;
+  std::vector<Fill_method> region_method;  ///< the method of the first patch of each region's holes
 };
 
 /// The connected component (by edges) of every face.
@@ -247,6 +253,7 @@ class Region_replacer {
       }
     }
     for (std::size_t r = 0; r < regions.size(); ++r) report.replaced.push_back(unit_ok[unit_of[r]]);
+    record_per_region(unit_of, tie, removed, groups, units_of_group, patches, unit_ok, report);
     return report;
   }
 
@@ -386,6 +393,38 @@ class Region_replacer {
   }
   static void join(std::vector<std::size_t>& parent, std::size_t a, std::size_t b) {
     parent[find(parent, a)] = find(parent, b);
+  }
+
+  /// Fills the per-region counts of `report` (see Region_replacement_report): what each tie of
+  /// merged regions removed and added, given to every region in it.
+  void record_per_region(const std::vector<std::size_t>& unit_of, std::vector<std::size_t>& tie,
+                         const std::vector<Removed>& removed, const std::vector<Group>& groups,
+                         const std::vector<std::vector<std::size_t>>& units_of_group,
+                         const std::vector<Fill_patch<PolygonMesh>>& patches,
+                         const std::vector<bool>& unit_ok, Region_replacement_report& report) {
+    const std::size_t units = removed.size();
+    std::vector<std::size_t> added(units, 0), vertices(units, 0), gone(units, 0), members(units, 0);
+    std::vector<Fill_method> method(units, options_.method);
+    std::vector<bool> has_method(units, false);
+    for (std::size_t k = 0; k < groups.size(); ++k) {
+      const std::size_t t = find(tie, units_of_group[k].front());
+      added[t] += patches[k].faces.size();
+      vertices[t] += patches[k].vertices.size();
+      if (!has_method[t]) method[t] = fill_results.back().holes[k].used;
+      has_method[t] = true;
+    }
+    for (std::size_t u = 0; u < units; ++u)
+      if (unit_ok[u]) gone[find(tie, u)] += removed[u].faces.size();
+    for (std::size_t u : unit_of) ++members[find(tie, u)];
+    for (std::size_t u : unit_of) {
+      const std::size_t t = find(tie, u);
+      const bool ok = unit_ok[u];
+      report.region_faces_added.push_back(ok ? added[t] : 0);
+      report.region_vertices_added.push_back(ok ? vertices[t] : 0);
+      report.region_faces_removed.push_back(ok ? gone[t] : 0);
+      report.regions_merged.push_back(members[t]);
+      report.region_method.push_back(method[t]);
+    }
   }
 
   void record(Removed& unit) {

@@ -557,6 +557,21 @@ std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor> group_
   return vertices;
 }
 
+/// Records in `hole` the region replacement `j` of `round` that closed it: the faces removed
+/// around it and the patch that replaced them (shared with the holes its region merged with).
+inline void record_grown_fill(Hole_fill_report& hole, int rings,
+                              const Region_replacement_report& round, std::size_t j) {
+  std::string note = "filled after removing the " + std::to_string(round.region_faces_removed[j]) +
+                     " face(s) within " + std::to_string(rings) + " vertex ring(s) of its border";
+  if (round.regions_merged[j] > 1)
+    note += " (one region with " + std::to_string(round.regions_merged[j] - 1) +
+            " other hole(s); the counts are the region's)";
+  hole.notes.push_back(note + ": " + hole.failure);
+  hole.used = round.region_method[j];
+  hole.faces_created = round.region_faces_added[j];
+  hole.vertices_created = round.region_vertices_added[j];
+}
+
 /// Whether every face of `region` has its longest edge within `max_grown_face_to_border_edge`
 /// times the longest edge of the cycles of `group`.
 template <class PolygonMesh, class VertexPointMap, class Group>
@@ -648,19 +663,20 @@ void step_grow_failed_holes(PolygonMesh& pm, VertexPointMap vpm, const GeomTrait
                         max_deviation_in_border_edges, max_deviation);
     std::vector<std::size_t> still_failed;
     std::vector<Point> still_keys;
-    std::vector<bool> done(failed.size(), false);
-    for (std::size_t j = 0; j < in_round.size(); ++j) done[in_round[j]] = round.replaced[j];
+    std::vector<std::size_t> region_of(failed.size(), std::size_t(-1));
+    for (std::size_t j = 0; j < in_round.size(); ++j)
+      if (round.replaced[j]) region_of[in_round[j]] = j;
     std::size_t filled_now = 0;
     for (std::size_t i = 0; i < failed.size(); ++i) {
       Hole_fill_report& hole = result.holes.holes[failed[i]];
       if (too_long[i]) continue;
-      if (!done[i]) {
+      const std::size_t j = region_of[i];
+      if (j == std::size_t(-1)) {
         still_failed.push_back(failed[i]);
         still_keys.push_back(keys[i]);
         continue;
       }
-      hole.notes.push_back("filled after removing the faces within " + std::to_string(rings) +
-                           " vertex ring(s) of its border: " + hole.failure);
+      record_grown_fill(hole, rings, round, j);
       hole.failure.clear();
       hole.filled = true;
       --result.holes.failed;
@@ -723,7 +739,6 @@ std::vector<bool> fill_meeting_other_parts(PolygonMesh& pm, VertexPointMap vpm,
   std::vector<typename decltype(groups)::value_type> retried;
   std::vector<std::size_t> hole_of;
   for (const auto& group : groups) {
-    if (!component.count(face(opposite(group.outer, pm), pm))) continue;
     for (auto h : halfedges_around_face(group.outer, pm)) {
       const auto found = failed_at.find(get(vpm, target(h, pm)));
       if (found == failed_at.end()) continue;
