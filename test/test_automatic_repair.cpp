@@ -859,6 +859,50 @@ Mesh sphere_with_folded_hole_border() {
   return mesh;
 }
 
+// Two faces of a sphere that share only the vertex v are removed, and the faces on one side of
+// them get their own copy of v: one border cycle that passes twice through v's point, at two
+// distinct vertices (as soups of scans and CAD exports give). Hole filling welds the two into one
+// before filling the two triangles; the step counts the weld apart from the patches' vertices,
+// which are none (its net change of vertices is -1).
+TEST(AutomaticRepair, ABorderTouchingItselfAtCoincidentVerticesIsWeldedAndCounted) {
+  Mesh sphere;
+  MR::make_sphere(sphere, Point(0, 0, 0), 1.0, 2);
+  const Mesh::Vertex_index v = *sphere.vertices().begin();
+  std::vector<Mesh::Face_index> fan;
+  for (auto f : CGAL::faces_around_target(sphere.halfedge(v), sphere)) fan.push_back(f);
+  ASSERT_GE(fan.size(), 5u);
+  const std::size_t second = fan.size() / 2;  // f1 = fan[0], f2 = fan[second]
+  std::vector<Point> points;
+  for (auto w : sphere.vertices()) points.push_back(sphere.point(w));
+  const std::size_t copy = points.size();
+  points.push_back(sphere.point(v));
+  std::set<Mesh::Face_index> one_side(fan.begin() + 1, fan.begin() + second);
+  std::vector<std::vector<std::size_t>> polygons;
+  for (auto f : sphere.faces()) {
+    if (f == fan[0] || f == fan[second]) continue;
+    std::vector<std::size_t> polygon;
+    for (auto w : CGAL::vertices_around_face(sphere.halfedge(f), sphere))
+      polygon.push_back(w == v && one_side.count(f) ? copy : std::size_t(w));
+    polygons.push_back(polygon);
+  }
+  Mesh mesh;
+  support::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+  ASSERT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  ASSERT_EQ(count_border_cycles(mesh), 1u);
+  ASSERT_EQ(mesh.number_of_vertices(), sphere.number_of_vertices() + 1);
+
+  const auto result = MR::automatic_repair(mesh);
+  EXPECT_TRUE(CGAL::is_closed(mesh));
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  EXPECT_EQ(mesh.number_of_vertices(), sphere.number_of_vertices());
+  EXPECT_EQ(mesh.number_of_faces(), sphere.number_of_faces());
+  const auto* filling = find_step(result, "hole filling");
+  ASSERT_NE(filling, nullptr);
+  EXPECT_EQ(filling->count("vertices_added"), 0.0);
+  EXPECT_EQ(filling->count("coincident_border_vertices_welded"), 1.0);
+  EXPECT_EQ(filling->count("faces_added"), 2.0);
+}
+
 TEST(AutomaticRepair, HolesWithFoldedBordersAreGrownAndFilled) {
   Mesh mesh = sphere_with_folded_hole_border();
   ASSERT_EQ(count_border_cycles(mesh), 1u);
