@@ -253,7 +253,7 @@ class Region_replacer {
       }
     }
     for (std::size_t r = 0; r < regions.size(); ++r) report.replaced.push_back(unit_ok[unit_of[r]]);
-    record_per_region(unit_of, tie, removed, groups, units_of_group, patches, unit_ok, report);
+    record_per_region(unit_of, tie, removed, units_of_group, patches, filled, unit_ok, report);
     return report;
   }
 
@@ -398,19 +398,20 @@ class Region_replacer {
   /// Fills the per-region counts of `report` (see Region_replacement_report): what each tie of
   /// merged regions removed and added, given to every region in it.
   void record_per_region(const std::vector<std::size_t>& unit_of, std::vector<std::size_t>& tie,
-                         const std::vector<Removed>& removed, const std::vector<Group>& groups,
+                         const std::vector<Removed>& removed,
                          const std::vector<std::vector<std::size_t>>& units_of_group,
                          const std::vector<Fill_patch<PolygonMesh>>& patches,
-                         const std::vector<bool>& unit_ok, Region_replacement_report& report) {
+                         const Fill_result& filled, const std::vector<bool>& unit_ok,
+                         Region_replacement_report& report) {
     const std::size_t units = removed.size();
     std::vector<std::size_t> added(units, 0), vertices(units, 0), gone(units, 0), members(units, 0);
     std::vector<Fill_method> method(units, options_.method);
     std::vector<bool> has_method(units, false);
-    for (std::size_t k = 0; k < groups.size(); ++k) {
+    for (std::size_t k = 0; k < units_of_group.size(); ++k) {
       const std::size_t t = find(tie, units_of_group[k].front());
       added[t] += patches[k].faces.size();
       vertices[t] += patches[k].vertices.size();
-      if (!has_method[t]) method[t] = fill_results.back().holes[k].used;
+      if (!has_method[t]) method[t] = filled.holes[k].used;
       has_method[t] = true;
     }
     for (std::size_t u = 0; u < units; ++u)
