@@ -46,6 +46,8 @@ def off_variants():
         binary += struct.pack(">iiiii", 3, *t, 0)
     write(READERS, "binary.off", binary)
     write(READERS, "cr_only_bom.off", "\ufeffOFF\r4 4 0\r" + (pts + tris).replace("\n", "\r"))
+    write(READERS, "no_keyword.off", "# Geomview: the keyword is optional\n4 4 0\n" + pts + tris)
+    write(READERS, "utf16le.off", ("\ufeffOFF\n4 4 0\n" + pts + tris).encode("utf-16-le"))
     write(READERS, "quad_and_short.off",
           "OFF\n4 3 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n2 0 1\n1 3\n")
 
@@ -58,6 +60,8 @@ def obj_variants():
         "f %d %d %d\n" % tuple(i + 1 for i in t) for t in T)).replace("\n", "\r"))
     write(READERS, "bom.obj", "\ufeff" + pts + "".join(
         "f %d %d %d\r\n" % tuple(i + 1 for i in t) for t in T))
+    write(READERS, "utf16be.obj", ("\ufeff# saved as Unicode text\n" + pts + "".join(
+        "f %d %d %d\n" % (t[0] + 1, t[1] + 1, t[2] + 1) for t in T)).encode("utf-16-be"))
     write(READERS, "negative.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -1 -2\n"
           "v 0 0 1\nf -4 -3 -1\nf -4 -1 -2\nf -3 -2 -1\n")
     write(READERS, "texture_normal.obj", "mtllib a.mtl\no tet\n" + pts +
@@ -86,6 +90,8 @@ def stl_variants():
     text += "endsolid tet\n"
     write(READERS, "ascii_whitespace.stl", text)
     write(READERS, "ascii_bom_cr_only.stl", "\ufeff" + text.replace("\r\n", "\n").replace("\n", "\r"))
+    write(READERS, "binary_header_utf16_mark.stl", b"\xff\xfe" + data[2:])
+    write(READERS, "ascii_utf16le.stl", ("\ufeff" + text).encode("utf-16-le"))
     write(READERS, "ascii_one_line.stl", "solid t " + " ".join(
         "FACET NORMAL 0 0 1 OUTER LOOP " + " ".join("VERTEX %g %g %g" % P[i] for i in t) +
         " ENDLOOP ENDFACET" for t in T) + "\nENDSOLID t\n")
@@ -133,6 +139,11 @@ def ply_variants():
           "property float z\nelement tristrips 1\nproperty list int int vertex_indices\n"
           "end_header\n" + "".join("%g %g %g\n" % p for p in P) +
           "9 0 2 1 3 -1 1 3 0 2\n")
+    write(READERS, "free_text_header.ply",
+          "ply\nformat ascii 1.0\nCreated by Blender3D 249 - www.blender.org, source file: 't'\n"
+          "element vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+          "element face 4\nproperty list uchar int vertex_indices\nend_header\n" +
+          "".join("%g %g %g\n" % p for p in P) + "".join("3 %d %d %d\n" % t for t in T))
     write(READERS, "vertex_index.ply",
           "ply\r\nformat ascii 1.0\r\nelement vertex 4\r\nproperty float32 x\r\nproperty float32 y\r\n"
           "property float32 z\r\nelement face 4\r\nproperty list uint8 int32 vertex_index\r\n"

@@ -63,20 +63,26 @@ TEST(Readers, EveryVariantOfTheTetrahedronReadsAsFourPointsAndFourClosedFaces) {
                            "crlf_tabs.off",
                            "binary.off",
                            "cr_only_bom.off",
+                           "no_keyword.off",
+                           "utf16le.off",
                            "continuation.obj",
                            "cr_only.obj",
                            "bom.obj",
+                           "utf16be.obj",
                            "negative.obj",
                            "texture_normal.obj",
                            "binary_solid.stl",
                            "ascii_whitespace.stl",
                            "ascii_one_line.stl",
                            "ascii_bom_cr_only.stl",
+                           "ascii_utf16le.stl",
+                           "binary_header_utf16_mark.stl",
                            "binary_little.ply",
                            "binary_big.ply",
                            "extra_properties.ply",
                            "extra_fields.ply",
                            "tristrips.ply",
+                           "free_text_header.ply",
                            "vertex_index.ply"}) {
     MR::Polygon_soup<Point> soup;
     ASSERT_EQ(read_soup(readers_dir / name, soup), "") << name;
@@ -109,6 +115,20 @@ TEST(Readers, ObjPolygonsAndShortOffFacesAreCounted) {
   EXPECT_EQ(report.input_polygons, 3u);
   EXPECT_EQ(report.degenerate_polygons_removed, 2u);
   EXPECT_EQ(num_faces(mesh), 2u);  // the quad, triangulated
+}
+
+// Blender 2.4x wrote "Created by ..." without `comment` before the elements: skipped as free
+// text and counted in the soup stage's report; the same line among the elements is refused.
+TEST(Readers, FreeTextBeforeThePlyElementsIsSkippedAndCounted) {
+  MR::Polygon_soup<Point> soup;
+  ASSERT_EQ(read_soup(readers_dir / "free_text_header.ply", soup), "");
+  EXPECT_EQ(soup.header_lines_skipped, 1u);
+  Mesh mesh;
+  MR::Soup_repair_report report;
+  ASSERT_EQ(MR::read_mesh((readers_dir / "free_text_header.ply").string(), mesh, report), "");
+  EXPECT_EQ(report.header_lines_skipped, 1u);
+  ASSERT_EQ(read_soup(readers_dir / "extra_fields.ply", soup), "");
+  EXPECT_EQ(soup.header_lines_skipped, 0u);
 }
 
 TEST(Readers, NegativeObjIndicesAreRelativeToTheVerticesBefore) {
@@ -190,6 +210,11 @@ TEST(Readers, MoreMalformedHeadersAndRecords) {
            "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
            "0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n",
        "line 13: vertex index 3 out of range (3 vertices)"},
+      {"h.ply", ply + "element vertex 1\n" + xyz + "Created by a tool\nend_header\n",
+       "line 7: unknown header line 'Created'"},
+      {"f.off", std::string("\xff\xfeO\0F\0F\0\n", 9),
+       "byte 8: a UTF-16 text file of an odd number of bytes"},
+      {"g.off", "3 -1\n", "line 1: expected the number of faces, found '-1'"},
       {"a.off", "OFF\n3 1\n0 0 0\n1 0\n0 1 0\n3 0 1 2\n",
        "line 4: vertex 1 has 2 coordinates, expected 3"},
       {"b.off", "OFF\n3 1\n0 0 0\n1 0 0\n0 1 0\n", "the file ends after 0 of 1 faces"},

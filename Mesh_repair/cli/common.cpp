@@ -218,6 +218,7 @@ std::string describe_soup_repair(const CGAL::Mesh_repair::Soup_repair_report& r)
   line(r.vertices_duplicated, "vertices duplicated to make the soup manifold");
   line(r.polygons_reversed, "polygons reversed to orient the soup");
   line(r.polygons_triangulated, "polygons with more than three sides triangulated");
+  line(r.header_lines_skipped, "header lines of no known keyword skipped as free text");
   return out.str();
 }
 

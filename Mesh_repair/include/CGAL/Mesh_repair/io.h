@@ -79,6 +79,7 @@ std::string read_polygon_soup_from_memory(const char* data, std::size_t size,
   std::string error =
       internal::readers::read_soup(in, format, name, soup.points, soup.polygons, counts);
   soup.short_polygons_skipped = counts.short_polygons;
+  soup.header_lines_skipped = counts.header_lines_skipped;
   if (error.empty()) error = internal::validate_soup(name, soup.points, soup.polygons);
   if (!error.empty()) soup.points.clear(), soup.polygons.clear();  // nothing half-read
   return error;
@@ -118,6 +119,7 @@ std::string read_polygon_soup(const std::string& filename, Polygon_soup<Point>& 
   soup.points.clear();
   soup.polygons.clear();
   soup.short_polygons_skipped = 0;
+  soup.header_lines_skipped = 0;
   std::string error = internal::precheck_mesh_file(filename);
   if (!error.empty()) return error;
   internal::readers::Read_counts counts;
@@ -126,6 +128,7 @@ std::string read_polygon_soup(const std::string& filename, Polygon_soup<Point>& 
                                         soup.polygons, counts);
   });
   soup.short_polygons_skipped = counts.short_polygons;
+  soup.header_lines_skipped = counts.header_lines_skipped;
   if (error.empty()) error = internal::validate_soup(filename, soup.points, soup.polygons);
   if (!error.empty()) soup.points.clear(), soup.polygons.clear();  // nothing half-read
   return error;
@@ -445,6 +448,7 @@ std::string repaired_soup_to_mesh(Polygon_soup<Point>& soup, PolygonMesh& pm,
   if (options.repair_soup) report = repair_polygon_soup(soup, options.remove_zero_volume_walls);
   report.input_polygons += soup.short_polygons_skipped;
   report.degenerate_polygons_removed += soup.short_polygons_skipped;
+  report.header_lines_skipped = soup.header_lines_skipped;
   if (soup.polygons.empty()) return name + ": no valid face left after soup repair";
   const std::string error = soup_to_mesh(soup, pm, options.triangulate, report);
   if (!error.empty()) {

@@ -20,6 +20,8 @@ struct Polygon_soup {
   std::vector<std::vector<std::size_t>> polygons;
   /// Faces of the file with fewer than three vertices, left out of `polygons`.
   std::size_t short_polygons_skipped = 0;
+  /// Header lines of no known keyword, skipped as free text (PLY, before the elements).
+  std::size_t header_lines_skipped = 0;
 };
 
 }  // namespace Mesh_repair

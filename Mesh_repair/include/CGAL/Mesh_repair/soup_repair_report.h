@@ -35,7 +35,9 @@ struct Soup_repair_report {
   std::size_t polygons_reversed = 0;        ///< polygons flipped to agree with neighbours
   std::size_t polygons_triangulated = 0;    ///< faces with more than three sides split
   std::size_t triangles_from_polygons = 0;  ///< triangles that replaced them
-  bool orientable = true;                   ///< orientation needed no vertex duplication
+  /// Header lines of no known keyword the reader skipped as free text (not geometry).
+  std::size_t header_lines_skipped = 0;
+  bool orientable = true;  ///< orientation needed no vertex duplication
   /// Locations: soup point pairs of non-manifold edges, soup points of non-manifold vertices.
   std::vector<std::pair<std::size_t, std::size_t>> non_manifold_edge_points;
   std::vector<std::size_t> non_manifold_vertex_points;
@@ -67,6 +69,7 @@ inline void write_json(Json_writer& json, const Soup_repair_report& r) {
       .field("polygons_reversed", r.polygons_reversed)
       .field("polygons_triangulated", r.polygons_triangulated)
       .field("triangles_from_polygons", r.triangles_from_polygons)
+      .field("header_lines_skipped", r.header_lines_skipped)
       .field("orientable", r.orientable);
   json.key("non_manifold_edge_points").begin_array();
   for (const auto& e : r.non_manifold_edge_points)

@@ -291,8 +291,47 @@ inline void check_polygon_size(std::uintmax_t n, std::uintmax_t line, std::uintm
 
 /// What a reader produces besides the soup: faces with fewer than three vertices, which are
 /// left out of the soup (counted, so the soup report stays complete).
+/// True when `in` starts with a UTF-16 byte order mark (FF FE or FE FF: Windows editors save
+/// "Unicode" text so); leaves `in` at its first byte.
+inline bool starts_with_utf16_mark(Byte_reader& in) {
+  unsigned char mark[2];
+  const bool read = in.size() >= 2 && in.read(mark, 2);
+  if (!in.rewind()) fail_at_offset(0, "cannot seek back to the start of the file");
+  return read && ((mark[0] == 0xFF && mark[1] == 0xFE) || (mark[0] == 0xFE && mark[1] == 0xFF));
+}
+
+/// The UTF-16 text of `in` (after its byte order mark) as UTF-8, which the text readers read like
+/// any other file; 3 bytes of memory per code unit at most. An odd number of bytes is an error.
+inline std::string utf16_to_utf8(Byte_reader& in) {
+  unsigned char unit[2];
+  in.read(unit, 2);
+  const bool little_endian = unit[0] == 0xFF;
+  if (in.size() % 2 != 0)
+    fail_at_offset(in.size() - 1, "a UTF-16 text file of an odd number of bytes (truncated)");
+  std::string text;
+  text.reserve(std::size_t(in.size() / 2));
+  while (in.read(unit, 2)) {
+    const unsigned c =
+        little_endian ? unit[0] | unsigned(unit[1]) << 8 : unit[1] | unsigned(unit[0]) << 8;
+    if (c < 0x80) {
+      text += char(c);
+    } else if (c < 0x800) {
+      text += char(0xC0 | c >> 6);
+      text += char(0x80 | (c & 0x3F));
+    } else {  // a surrogate half is written as its own 3 bytes: only comments hold such text
+      text += char(0xE0 | c >> 12);
+      text += char(0x80 | (c >> 6 & 0x3F));
+      text += char(0x80 | (c & 0x3F));
+    }
+  }
+  return text;
+}
+
 struct Read_counts {
   std::size_t short_polygons = 0;
+  /// PLY header lines of no known keyword (old Blender exporters wrote "Created by ..."
+  /// without `comment`), skipped.
+  std::size_t header_lines_skipped = 0;
 };
 
 }  // namespace readers

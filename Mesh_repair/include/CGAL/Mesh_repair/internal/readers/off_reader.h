@@ -3,7 +3,8 @@
 #ifndef CGAL_MESH_REPAIR_INTERNAL_READERS_OFF_READER_H
 #define CGAL_MESH_REPAIR_INTERNAL_READERS_OFF_READER_H
 
-// A strict OFF reader: the keyword [ST][C][N][4][n]OFF, optionally BINARY; the counts on the
+// A strict OFF reader: the keyword [ST][C][N][4][n]OFF (optional, as in Geomview: then the
+// file starts with the counts), optionally BINARY; the counts on the
 // keyword's line or after it; '#' comments anywhere; one vertex or face per line (what follows
 // the coordinates or the indices, colours or normals, is ignored). Binary OFF is big-endian.
 
@@ -72,7 +73,10 @@ inline Off_header read_off_header(Byte_reader& in) {
     if (!keyword) {
       if (words.at_end()) continue;
       const std::string_view word = words.next();
-      if (!parse_off_keyword(word, h))
+      long long count = 0;
+      if (parse_integer(word, count) && count >= 0)
+        numbers.push_back(std::uintmax_t(count));  // Geomview's OFF: the keyword is optional
+      else if (!parse_off_keyword(word, h))
         fail_at_line(in.line(), "not an OFF file: the first word is " + quoted(word));
       keyword = true;
       wanted = h.dimension == 0 ? 3 : 2;

@@ -154,7 +154,7 @@ inline std::uintmax_t ply_min_record_bytes(const Ply_element& e, Ply_format form
   return std::max<std::uintmax_t>(bytes, 1);
 }
 
-inline Ply_header read_ply_header(Byte_reader& in) {
+inline Ply_header read_ply_header(Byte_reader& in, Read_counts& counts) {
   Ply_header h;
   std::string line;
   if (!in.read_line(line) || Tokens(line).next() != "ply" || !Tokens(line).rest().substr(3).empty())
@@ -192,6 +192,10 @@ inline Ply_header read_ply_header(Byte_reader& in) {
       h.elements.push_back(e);
     } else if (keyword == "property") {
       parse_ply_property(words, h, at);
+    } else if (h.elements.empty()) {
+      // Free text before the elements, like a comment: Blender 2.4x wrote "Created by ..."
+      // there. Within the elements an unknown line may be a misspelt declaration: refused.
+      ++counts.header_lines_skipped;
     } else {
       fail_at_line(at, "unknown header line " + quoted(keyword));
     }
@@ -401,7 +405,7 @@ void read_ply_element(Ply_record_reader& r, const Ply_header& h, const Ply_eleme
 template <class Point>
 void read_ply(Byte_reader& in, std::vector<Point>& points,
               std::vector<std::vector<std::size_t>>& polygons, Read_counts& counts) {
-  const Ply_header h = read_ply_header(in);
+  const Ply_header h = read_ply_header(in, counts);
   Ply_record_reader records(in, h.format);
   if (h.format != Ply_format::ascii) in.refuse_zero_chunks();
   for (const Ply_element& e : h.elements)

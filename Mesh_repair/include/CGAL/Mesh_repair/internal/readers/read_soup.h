@@ -19,6 +19,8 @@
 #include <CGAL/Mesh_repair/internal/readers/stl_reader.h>
 #include <CGAL/Mesh_repair/internal/readers/xyz_reader.h>
 
+#include <algorithm>
+#include <cctype>
 #include <new>
 #include <stdexcept>
 #include <string>
@@ -28,6 +30,14 @@ namespace CGAL {
 namespace Mesh_repair {
 namespace internal {
 namespace readers {
+
+// The keyword of an ASCII STL, after white space, in any case.
+inline bool starts_with_solid(const std::string& text) {
+  const std::size_t start = std::min(text.find_first_not_of(" \t\r\n\f\v"), text.size());
+  std::string word = text.substr(start, 5);
+  for (char& c : word) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return word == "solid";
+}
 
 /// Reads `in` as `format` ("OFF", "OBJ", "STL", "PLY", or "XYZ": points only) into a soup. Returns
 /// an empty string, or one line "NAME: line L: reason" / "NAME: byte B: reason"; the soup is then
@@ -41,14 +51,26 @@ std::string read_soup(Byte_reader& in, const std::string& format, const std::str
   counts = Read_counts();
   std::string error;
   try {
+    // A UTF-16 text file is read as its UTF-8 text; a binary STL may start with the same two
+    // bytes, so an STL is decoded only when its text starts with "solid".
+    std::string utf16_text;
+    if (format != "XYZ" && starts_with_utf16_mark(in)) {
+      utf16_text = utf16_to_utf8(in);
+      if (format == "STL" && !starts_with_solid(utf16_text)) {
+        utf16_text.clear();
+        in.rewind();
+      }
+    }
+    Byte_reader decoded(utf16_text.data(), utf16_text.size());
+    Byte_reader& text = utf16_text.empty() ? in : decoded;
     if (format == "OFF")
-      read_off(in, points, polygons, counts);
+      read_off(text, points, polygons, counts);
     else if (format == "OBJ")
-      read_obj(in, points, polygons, counts);
+      read_obj(text, points, polygons, counts);
     else if (format == "STL")
-      read_stl(in, points, polygons, counts);
+      read_stl(text, points, polygons, counts);
     else if (format == "PLY")
-      read_ply(in, points, polygons, counts);
+      read_ply(text, points, polygons, counts);
     else if (format == "XYZ")
       read_xyz(in, points);  // points only
     else
