@@ -4,6 +4,7 @@
 #include <CGAL/Mesh_repair/generators.h>
 #include <CGAL/Mesh_repair/internal/finite_distance_traits.h>
 #include <CGAL/Mesh_repair/io.h>
+#include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <gtest/gtest.h>
@@ -114,6 +115,36 @@ TEST(SoupRepair, TriangulatesQuadsAndCountsThem) {
   ASSERT_EQ(MR::read_mesh(path.string(), mesh, report), "");
   EXPECT_EQ(report.polygons_triangulated, 1u);
   EXPECT_EQ(num_faces(mesh), 2u);
+}
+
+// A double-sided quad written once as a quad and once as two triangles (assimp's test model
+// regr_3429812.obj): the triangulated quad repeats the triangles, which the soup stage could not
+// see. Repaired again as triangles, one side is kept: an oriented sheet, read back the same.
+TEST(SoupRepair, QuadRepeatedAsTrianglesKeepsOneConsistentSide) {
+  const fs::path path = scratch("double_sided.obj");
+  write_text(path,
+             "v 0.0498759 0.964456 0.0949991\nv 0.042335 0.96222 0.0980526\n"
+             "v 0.0418548 0.961535 0.096869\nv 0.049267 0.963762 0.0939126\n"
+             "f 4 3 2 1\nf 4 3 2\nf 4 2 1\n");
+  Mesh mesh;
+  MR::Soup_repair_report report;
+  ASSERT_EQ(MR::read_mesh(path.string(), mesh, report), "");
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  EXPECT_EQ(num_faces(mesh), 2u);
+  EXPECT_EQ(num_vertices(mesh), 4u);
+  EXPECT_EQ(report.polygons_triangulated, 1u);
+  EXPECT_EQ(report.duplicated_polygons_removed, 2u);
+  std::vector<typename boost::graph_traits<Mesh>::halfedge_descriptor> borders;
+  CGAL::Polygon_mesh_processing::extract_boundary_cycles(mesh, std::back_inserter(borders));
+  EXPECT_EQ(borders.size(), 1u);  // one sheet, its two triangles sharing their diagonal
+  const fs::path written = scratch("double_sided_out.off");
+  ASSERT_EQ(MR::write_mesh(written.string(), mesh), "");
+  Mesh back;
+  MR::Soup_repair_report back_report;
+  ASSERT_EQ(MR::read_mesh(written.string(), back, back_report), "");
+  EXPECT_EQ(back_report.polygons_reversed, 0u);
+  EXPECT_EQ(back_report.duplicated_polygons_removed, 0u);
+  EXPECT_EQ(num_faces(back), 2u);
 }
 
 // A non-planar pentagon on which CGAL 5.5's triangulate_faces returns a corrupt halfedge

@@ -369,6 +369,28 @@ void triangulate_polygon(const std::vector<Point>& points, const Polygon& polygo
 
 }  // namespace internal
 
+namespace internal {
+
+/// True when two triangles of `pm` have the same three vertices, in either orientation.
+template <class PolygonMesh>
+bool has_repeated_triangles(const PolygonMesh& pm) {
+  using vertex_descriptor = typename boost::graph_traits<PolygonMesh>::vertex_descriptor;
+  std::vector<std::array<vertex_descriptor, 3>> triangles;
+  triangles.reserve(num_faces(pm));
+  for (auto f : faces(pm)) {
+    if (degree(f, pm) != 3) continue;
+    const auto h = halfedge(f, pm);
+    std::array<vertex_descriptor, 3> t = {target(h, pm), target(next(h, pm), pm),
+                                          source(h, pm)};
+    std::sort(t.begin(), t.end());
+    triangles.push_back(t);
+  }
+  std::sort(triangles.begin(), triangles.end());
+  return std::adjacent_find(triangles.begin(), triangles.end()) != triangles.end();
+}
+
+}  // namespace internal
+
 /// Builds `pm` from `soup` with every polygon of more than three sides triangulated on its own
 /// (`internal::triangulate_polygon`: CGAL's triangulation, or a fan where CGAL fails), the
 /// triangle soup repaired again (a fan's diagonals may meet other faces); the triangulation and
@@ -429,6 +451,10 @@ std::string soup_to_mesh(const Polygon_soup<Point>& soup, PolygonMesh& pm, bool 
       // polygon whose projection is not simple (found by fuzzing: the next CGAL call on the
       // mesh never returns). Then the soup's polygons are split into fans and repaired again.
       if (!CGAL::is_valid_polygon_mesh(pm)) return triangulate_soup_to_mesh(soup, pm, report);
+      // A polygon and triangles covering it (a double-sided face written once as a polygon,
+      // once as triangles) become repeated triangles only now, past the soup's duplicate
+      // removal and orientation: repaired again as triangles.
+      if (internal::has_repeated_triangles(pm)) return triangulate_soup_to_mesh(soup, pm, report);
     }
   }
   return {};
