@@ -225,12 +225,6 @@ namespace internal {
 extern
 #endif
     template Repair_result
-    run_repair_pipeline<Core_mesh, Core_vpm, Core_traits>(Core_mesh&, Core_vpm, const Core_traits&,
-                                                          const Repair_options&, Any_visitor);
-#ifndef CGAL_MESH_REPAIR_INSTANTIATE_AUTOMATIC_REPAIR
-extern
-#endif
-    template Repair_result
     run_automatic_repair<Core_mesh, Core_vpm, Core_traits>(Core_mesh&, Core_vpm, const Core_traits&,
                                                            const Repair_options&, Any_visitor);
 }  // namespace internal

@@ -264,10 +264,10 @@ void verify_again(const PolygonMesh& pm, const Repair_options& options,
   result.output_faces = count_faces(pm);
 }
 
-template <class PolygonMesh, class VertexPointMap, class GeomTraits>
+template <class PolygonMesh, class VertexPointMap, class GeomTraits, class Point>
 void step_coincident_elements(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
-                              const Repair_options& options, Repair_result& result,
-                              Any_visitor visitor) {
+                              const Repair_options& options, const std::vector<Point>& hole_points,
+                              Repair_result& result, Any_visitor visitor) {
   Step_timer timer(result, "coincident elements", visitor);
   Coincidence_census census;
   bool changed = false;
@@ -292,6 +292,12 @@ void step_coincident_elements(PolygonMesh& pm, VertexPointMap vpm, const GeomTra
     Coincident_elements<PolygonMesh, VertexPointMap, GeomTraits>(pm, vpm, traits).count(census);
   }
   verify_again(pm, options, census, result, changed);
+  // Merging coincident points may join an open hole's border to another (two sheets whose
+  // outlines coincide): the hole records must say what the written mesh shows.
+  if (changed)
+    reconcile_open_holes(pm, vpm, hole_points,
+                         "merging coincident points joined its border to another one", timer,
+                         result);
   timer.count("duplicated_faces_removed", double(census.duplicated_faces_removed));
   timer.count("zero_volume_groups_removed", double(census.zero_volume_groups_removed));
   timer.count("isolated_vertices_removed", double(census.isolated_vertices_removed));
@@ -350,14 +356,16 @@ inline void sort_out_kept(Repair_result& result, const Repair_options& options) 
 template <class PolygonMesh, class VertexPointMap, class GeomTraits>
 Repair_result run_automatic_repair(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
                                    const Repair_options& options, Any_visitor visitor) {
-  Repair_result result = run_repair_pipeline(pm, vpm, traits, options, visitor);
+  std::vector<typename boost::property_traits<VertexPointMap>::value_type> hole_points;
+  Repair_result result = run_repair_pipeline(pm, vpm, traits, options, visitor, hole_points);
 #ifdef CGAL_LINKED_WITH_TBB
   std::unique_ptr<tbb::global_control> limit;
   if (options.fill.number_of_threads > 0)
     limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
                                                   std::size_t(options.fill.number_of_threads));
 #endif
-  if (!result.cancelled) step_coincident_elements(pm, vpm, traits, options, result, visitor);
+  if (!result.cancelled)
+    step_coincident_elements(pm, vpm, traits, options, hole_points, result, visitor);
   result.remaining.clear();
   list_remaining(result);
   sort_out_kept(result, options);

@@ -1306,8 +1306,8 @@ void step_merge_intersecting_solids(PolygonMesh& pm, VertexPointMap vpm, const G
 /// written mesh shows, so they are counted as closed later, with a note.
 template <class PolygonMesh, class VertexPointMap, class Point>
 void reconcile_open_holes(const PolygonMesh& pm, VertexPointMap vpm,
-                          const std::vector<Point>& border_points, Step_timer& timer,
-                          Repair_result& result) {
+                          const std::vector<Point>& border_points, const std::string& cause,
+                          Step_timer& timer, Repair_result& result) {
   std::set<Point> on_border;
   for (auto h : halfedges(pm))
     if (is_border(h, pm)) on_border.insert(get(vpm, target(h, pm)));
@@ -1316,10 +1316,8 @@ void reconcile_open_holes(const PolygonMesh& pm, VertexPointMap vpm,
   for (std::size_t k = 0; k < holes.holes.size() && k < border_points.size(); ++k) {
     Hole_fill_report& hole = holes.holes[k];
     if (hole.filled || on_border.count(border_points[k])) continue;
-    hole.notes.push_back(
-        "no longer open in the output: a later step (the growth of a failed hole, the "
-        "self-intersection removal) replaced or removed the faces around it (before: " +
-        hole.failure + ")");
+    hole.notes.push_back("no longer open in the output: " + cause + " (before: " + hole.failure +
+                         ")");
     if (hole.skipped) {
       --holes.skipped;
       if (hole.sheet_border) --holes.sheet_borders;
@@ -1350,7 +1348,10 @@ void step_verify(const PolygonMesh& pm, VertexPointMap vpm, const std::vector<Po
   result.manifold = non_manifold.empty();
   result.border_cycles_left = border_cycles(pm).size();
   result.closed = result.border_cycles_left == 0;
-  reconcile_open_holes(pm, vpm, border_points, timer, result);
+  reconcile_open_holes(pm, vpm, border_points,
+                       "a later step (the growth of a failed hole, the self-intersection "
+                       "removal) replaced or removed the faces around it",
+                       timer, result);
   if (options.detect_self_intersections) {
     set_output_self_intersections(pm, result);
     result.self_intersections_checked = true;
@@ -1404,10 +1405,13 @@ inline void list_remaining(Repair_result& result) {
   add(result.cancelled, "cancelled before the end");
 }
 
-/// The pipeline of `automatic_repair` on plain options (compiled once per mesh type).
+/// The pipeline of `automatic_repair` on plain options, up to the verification; `hole_points`
+/// receives a border point of each hole the filling met (for later reconciliations).
 template <class PolygonMesh, class VertexPointMap, class GeomTraits>
-Repair_result run_repair_pipeline(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
-                                  const Repair_options& options, Any_visitor visitor) {
+Repair_result run_repair_pipeline(
+    PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits, const Repair_options& options,
+    Any_visitor visitor,
+    std::vector<typename boost::property_traits<VertexPointMap>::value_type>& hole_points) {
 #ifdef CGAL_LINKED_WITH_TBB
   // The parallel steps (self-intersection counts, hole filling) run on TBB's pool; the limit holds
   // for the duration of the call.
@@ -1443,7 +1447,7 @@ Repair_result run_repair_pipeline(PolygonMesh& pm, VertexPointMap vpm, const Geo
     step_bridge_through_holes(pm, vpm, traits, visitor, result);
   if (!result.cancelled && options.repair_self_intersections && options.detect_self_intersections)
     step_relax_spikes(pm, vpm, traits, visitor, result);
-  std::vector<typename boost::property_traits<VertexPointMap>::value_type> hole_points;
+  hole_points.clear();
   if (!result.cancelled) hole_points = step_fill_holes(pm, vpm, traits, options, visitor, result);
   if (!result.cancelled && options.repair_self_intersections)
     step_remove_self_intersections(pm, vpm, traits, options, visitor, result);
