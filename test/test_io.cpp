@@ -147,6 +147,65 @@ TEST(SoupRepair, QuadRepeatedAsTrianglesKeepsOneConsistentSide) {
   EXPECT_EQ(num_faces(back), 2u);
 }
 
+// Two cells of one solid sharing a wall written once: an octagonal tube closed at both ends
+// and a sheet across its middle ring, whose 8 edges each have three polygons. `repair`'s
+// reading removes the wall (inside the tube, by exact ray parity): one closed surface. A sheet
+// across the same ring that leaves the tube (a cone through its end) is no internal wall.
+std::string tube_with_sheet(double apex_height) {
+  const int n = 8;
+  std::ostringstream off;
+  off << "OFF\n" << 3 * n + 1 << ' ' << 4 * n + 2 * (n - 2) + n << " 0\n";
+  for (double z : {-1.0, 0.0, 1.0})
+    for (int i = 0; i < n; ++i)
+      off << std::cos(2 * M_PI * i / n) << ' ' << std::sin(2 * M_PI * i / n) << ' ' << z << '\n';
+  off << "0 0 " << apex_height << '\n';
+  for (int band = 0; band < 2; ++band)
+    for (int i = 0; i < n; ++i) {
+      const int a = band * n, b = a + n, j = (i + 1) % n;
+      off << "3 " << a + i << ' ' << a + j << ' ' << b + j << "\n3 " << a + i << ' ' << b + j << ' '
+          << b + i << '\n';
+    }
+  for (int i = 1; i + 1 < n; ++i)
+    off << "3 0 " << i + 1 << ' ' << i << "\n3 " << 2 * n << ' ' << 2 * n + i << ' '
+        << 2 * n + i + 1 << '\n';
+  for (int i = 0; i < n; ++i)
+    off << "3 " << 3 * n << ' ' << n + i << ' ' << n + (i + 1) % n << '\n';
+  return off.str();
+}
+
+TEST(SoupRepair, AnInternalWallWrittenOnceIsRemovedWhenRepairing) {
+  const fs::path path = scratch("two_cells.off");
+  write_text(path, tube_with_sheet(0.3));
+  MR::Read_options repair;
+  repair.remove_zero_volume_walls = true;
+  Mesh mesh;
+  MR::Soup_repair_report report;
+  ASSERT_EQ(MR::read_mesh(path.string(), mesh, report, repair), "");
+  EXPECT_EQ(report.internal_walls_removed, 1u);
+  EXPECT_EQ(report.internal_wall_polygons_removed, 8u);
+  EXPECT_EQ(report.non_manifold_edges, 0u);
+  EXPECT_EQ(num_faces(mesh), 4u * 8u + 2u * 6u);
+  EXPECT_TRUE(CGAL::is_closed(mesh));
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  // CGAL's rule (check, the read-back of a written file) keeps the wall and splits its edges.
+  Mesh as_read;
+  ASSERT_EQ(MR::read_mesh(path.string(), as_read, report), "");
+  EXPECT_EQ(report.internal_walls_removed, 0u);
+  EXPECT_EQ(report.non_manifold_edges, 8u);
+}
+
+TEST(SoupRepair, ASheetLeavingTheClosedSurfaceIsNoInternalWall) {
+  const fs::path path = scratch("cone_through_the_end.off");
+  write_text(path, tube_with_sheet(5.0));
+  MR::Read_options repair;
+  repair.remove_zero_volume_walls = true;
+  Mesh mesh;
+  MR::Soup_repair_report report;
+  ASSERT_EQ(MR::read_mesh(path.string(), mesh, report, repair), "");
+  EXPECT_EQ(report.internal_walls_removed, 0u);
+  EXPECT_EQ(report.non_manifold_edges, 8u);
+}
+
 // A non-planar pentagon on which CGAL 5.5's triangulate_faces returns a corrupt halfedge
 // structure (found by fuzzing; `check` then never finished): the soup's fan triangulation is
 // used instead, and the mesh is valid.

@@ -212,6 +212,10 @@ std::string describe_soup_repair(const CGAL::Mesh_repair::Soup_repair_report& r)
   line(r.duplicated_polygons_removed, "duplicated polygons removed");
   line(r.zero_volume_walls_removed,
        "zero-volume walls removed whole (duplicated polygons between two shells)");
+  if (r.internal_walls_removed > 0)
+    out << "  " << r.internal_walls_removed << " internal wall(s) removed whole ("
+        << r.internal_wall_polygons_removed
+        << " polygons; sheets inside a closed part, on its non-manifold edges)\n";
   line(r.isolated_points_removed, "isolated points removed");
   line(r.non_manifold_edges, "non-manifold edges (split apart)");
   line(r.non_manifold_vertices, "non-manifold vertices (duplicated)");

@@ -30,6 +30,7 @@
 #include <CGAL/Mesh_repair/soup_repair_report.h>
 #include <CGAL/Mesh_repair/internal/polygon_projection.h>
 #include <CGAL/Mesh_repair/internal/soup_validation.h>
+#include <CGAL/Mesh_repair/internal/soup_internal_walls.h>
 #include <CGAL/Mesh_repair/internal/soup_to_mesh.h>
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
@@ -63,8 +64,10 @@ struct Read_options {
   /// Duplicated polygons (the same points in either orientation) are all removed, instead of
   /// all but one as CGAL's `read_polygon_mesh` does, when that leaves fewer edges with more
   /// than two polygons: the wall between two closed shells that share a face, whose removal
-  /// joins the shells. `mesh_repair repair` sets it; `check` and the read-back of a written file
-  /// keep CGAL's rule.
+  /// joins the shells; and internal walls written once (a sheet whose outline is all
+  /// non-manifold edges, inside the closed surface the rest of its part forms) are removed,
+  /// counted in `internal_walls_removed`. `mesh_repair repair` sets it; `check` and the
+  /// read-back of a written file keep CGAL's rule.
   bool remove_zero_volume_walls = false;
 };
 
@@ -283,6 +286,11 @@ Soup_repair_report repair_polygon_soup(Polygon_soup<Point>& soup,
   }
   report.duplicated_polygons_removed +=
       PMP::merge_duplicate_polygons_in_polygon_soup(points, polygons);
+  if (remove_zero_volume_walls) {
+    const auto walls = internal::remove_internal_walls(points, polygons);
+    report.internal_walls_removed = walls.first;
+    report.internal_wall_polygons_removed = walls.second;
+  }
   report.isolated_points_removed = PMP::remove_isolated_points_in_polygon_soup(points, polygons);
 
   internal::Orientation_counter counter(&report);
@@ -298,6 +306,8 @@ inline void add_soup_changes(Soup_repair_report& report, const Soup_repair_repor
   report.polygons_split += more.polygons_split;
   report.degenerate_polygons_removed += more.degenerate_polygons_removed;
   report.duplicated_polygons_removed += more.duplicated_polygons_removed;
+  report.internal_walls_removed += more.internal_walls_removed;
+  report.internal_wall_polygons_removed += more.internal_wall_polygons_removed;
   report.zero_volume_walls_removed += more.zero_volume_walls_removed;
   report.isolated_points_removed += more.isolated_points_removed;
   report.non_manifold_edges += more.non_manifold_edges;
@@ -380,8 +390,7 @@ bool has_repeated_triangles(const PolygonMesh& pm) {
   for (auto f : faces(pm)) {
     if (degree(f, pm) != 3) continue;
     const auto h = halfedge(f, pm);
-    std::array<vertex_descriptor, 3> t = {target(h, pm), target(next(h, pm), pm),
-                                          source(h, pm)};
+    std::array<vertex_descriptor, 3> t = {target(h, pm), target(next(h, pm), pm), source(h, pm)};
     std::sort(t.begin(), t.end());
     triangles.push_back(t);
   }

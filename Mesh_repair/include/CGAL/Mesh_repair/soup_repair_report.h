@@ -28,13 +28,17 @@ struct Soup_repair_report {
   /// Groups of duplicated polygons removed whole as zero-volume walls (`Read_options`); their
   /// polygons are counted in `duplicated_polygons_removed` too.
   std::size_t zero_volume_walls_removed = 0;
-  std::size_t isolated_points_removed = 0;  ///< points used by no polygon
-  std::size_t non_manifold_edges = 0;       ///< edges used by more than two polygons
-  std::size_t non_manifold_vertices = 0;    ///< vertices whose polygons form several fans
-  std::size_t vertices_duplicated = 0;      ///< points added to make the soup manifold
-  std::size_t polygons_reversed = 0;        ///< polygons flipped to agree with neighbours
-  std::size_t polygons_triangulated = 0;    ///< faces with more than three sides split
-  std::size_t triangles_from_polygons = 0;  ///< triangles that replaced them
+  /// Internal walls removed (with `remove_zero_volume_walls`): sheets written once whose whole
+  /// outline is non-manifold, inside the closed surface the rest of their part forms.
+  std::size_t internal_walls_removed = 0;
+  std::size_t internal_wall_polygons_removed = 0;  ///< their polygons
+  std::size_t isolated_points_removed = 0;         ///< points used by no polygon
+  std::size_t non_manifold_edges = 0;              ///< edges used by more than two polygons
+  std::size_t non_manifold_vertices = 0;           ///< vertices whose polygons form several fans
+  std::size_t vertices_duplicated = 0;             ///< points added to make the soup manifold
+  std::size_t polygons_reversed = 0;               ///< polygons flipped to agree with neighbours
+  std::size_t polygons_triangulated = 0;           ///< faces with more than three sides split
+  std::size_t triangles_from_polygons = 0;         ///< triangles that replaced them
   /// Header lines of no known keyword the reader skipped as free text (not geometry).
   std::size_t header_lines_skipped = 0;
   bool orientable = true;  ///< orientation needed no vertex duplication
@@ -45,8 +49,9 @@ struct Soup_repair_report {
   /// True when the soup stage changed nothing.
   bool clean() const {
     return points_merged + polygons_simplified + polygons_split + degenerate_polygons_removed +
-               duplicated_polygons_removed + isolated_points_removed + vertices_duplicated +
-               polygons_reversed + polygons_triangulated ==
+               duplicated_polygons_removed + internal_wall_polygons_removed +
+               isolated_points_removed + vertices_duplicated + polygons_reversed +
+               polygons_triangulated ==
            0;
   }
 };
@@ -62,6 +67,8 @@ inline void write_json(Json_writer& json, const Soup_repair_report& r) {
       .field("degenerate_polygons_removed", r.degenerate_polygons_removed)
       .field("duplicated_polygons_removed", r.duplicated_polygons_removed)
       .field("zero_volume_walls_removed", r.zero_volume_walls_removed)
+      .field("internal_walls_removed", r.internal_walls_removed)
+      .field("internal_wall_polygons_removed", r.internal_wall_polygons_removed)
       .field("isolated_points_removed", r.isolated_points_removed)
       .field("non_manifold_edges", r.non_manifold_edges)
       .field("non_manifold_vertices", r.non_manifold_vertices)
