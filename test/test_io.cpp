@@ -173,14 +173,19 @@ std::string tube_with_sheet(double apex_height) {
   return off.str();
 }
 
+// Reads as `mesh_repair repair` does (walls removed).
+std::string read_as_repair_does(const fs::path& path, Mesh& mesh, MR::Soup_repair_report& report) {
+  MR::Read_options repair;
+  repair.remove_zero_volume_walls = true;
+  return MR::read_mesh(path.string(), mesh, report, repair);
+}
+
 TEST(SoupRepair, AnInternalWallWrittenOnceIsRemovedWhenRepairing) {
   const fs::path path = scratch("two_cells.off");
   write_text(path, tube_with_sheet(0.3));
-  MR::Read_options repair;
-  repair.remove_zero_volume_walls = true;
   Mesh mesh;
   MR::Soup_repair_report report;
-  ASSERT_EQ(MR::read_mesh(path.string(), mesh, report, repair), "");
+  ASSERT_EQ(read_as_repair_does(path, mesh, report), "");
   EXPECT_EQ(report.internal_walls_removed, 1u);
   EXPECT_EQ(report.internal_wall_polygons_removed, 8u);
   EXPECT_EQ(report.non_manifold_edges, 0u);
@@ -194,14 +199,30 @@ TEST(SoupRepair, AnInternalWallWrittenOnceIsRemovedWhenRepairing) {
   EXPECT_EQ(report.non_manifold_edges, 8u);
 }
 
+// A cube whose top face is given a second time with the other diagonal: not a duplicate, but a
+// sheet on the closed surface the rest forms, so removed the same way.
+TEST(SoupRepair, AFaceGivenTwiceWithAnotherTriangulationIsRemovedWhenRepairing) {
+  const fs::path path = scratch("cube_top_twice.off");
+  write_text(path,
+             "OFF\n8 14 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
+             "3 0 2 1\n3 0 3 2\n3 4 5 6\n3 4 6 7\n3 0 1 5\n3 0 5 4\n3 1 2 6\n3 1 6 5\n"
+             "3 2 3 7\n3 2 7 6\n3 3 0 4\n3 3 4 7\n3 4 5 7\n3 5 6 7\n");
+  Mesh mesh;
+  MR::Soup_repair_report report;
+  ASSERT_EQ(read_as_repair_does(path, mesh, report), "");
+  EXPECT_EQ(report.internal_walls_removed, 1u);
+  EXPECT_EQ(report.internal_wall_polygons_removed, 2u);
+  EXPECT_EQ(num_faces(mesh), 12u);
+  EXPECT_TRUE(CGAL::is_closed(mesh));
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+}
+
 TEST(SoupRepair, ASheetLeavingTheClosedSurfaceIsNoInternalWall) {
   const fs::path path = scratch("cone_through_the_end.off");
   write_text(path, tube_with_sheet(5.0));
-  MR::Read_options repair;
-  repair.remove_zero_volume_walls = true;
   Mesh mesh;
   MR::Soup_repair_report report;
-  ASSERT_EQ(MR::read_mesh(path.string(), mesh, report, repair), "");
+  ASSERT_EQ(read_as_repair_does(path, mesh, report), "");
   EXPECT_EQ(report.internal_walls_removed, 0u);
   EXPECT_EQ(report.non_manifold_edges, 8u);
 }

@@ -5,7 +5,8 @@
 
 // Internal walls of a polygon soup: a sheet written once whose whole outline lies on edges of
 // three polygons, inside the closed surface that the other polygons of its part form (a CAD
-// solid of two cells sharing a face, a partition inside a box). Kept, it makes every edge of
+// solid of two cells sharing a face, a partition inside a box), or on it (a face given a second
+// time with another triangulation). Kept, it makes every edge of
 // its outline non-manifold, the soup's orientation splits them, and the repair sees three
 // open surfaces that no patch can close; removed, the part is one closed surface.
 
@@ -70,16 +71,17 @@ int ray_parity(const std::vector<typename Kernel::Triangle_3>& triangles,
   return odd ? 1 : 0;
 }
 
-// Strictly inside the closed surface of `triangles`: parity along one of a few directions whose
-// ray misses every edge (-1 when none does).
+// Where `p` lies against the closed surface of `triangles`: on it (2), or strictly inside (1)
+// or outside (0) by the parity along one of a few directions whose ray misses every edge (-1
+// when none does).
 template <class Kernel>
-int strictly_inside(const std::vector<typename Kernel::Triangle_3>& triangles,
-                    const typename Kernel::Point_3& p) {
+int side_of_closed_surface(const std::vector<typename Kernel::Triangle_3>& triangles,
+                           const typename Kernel::Point_3& p) {
   using V = typename Kernel::Vector_3;
   const V directions[] = {V(0.5377, 0.8622, 0.1310), V(-0.3190, 0.2265, -0.9203),
                           V(0.7071, -0.5537, 0.4397), V(-0.8161, -0.3571, 0.4546)};
   for (const auto& t : triangles)
-    if (t.has_on(p)) return 0;
+    if (t.has_on(p)) return 2;
   for (const V& d : directions) {
     const int parity = ray_parity<Kernel>(triangles, p, d);
     if (parity >= 0) return parity;
@@ -88,13 +90,16 @@ int strictly_inside(const std::vector<typename Kernel::Triangle_3>& triangles,
 }
 
 // Every sampled triangle of `sheet` (up to `max_wall_samples`, spread evenly) has its centroid
-// strictly inside the closed surface of `others`: a sheet partly outside is no wall.
+// inside the closed surface of `others` or on it (a face written a second time with another
+// triangulation): a sheet partly outside is no wall.
 template <class Kernel>
 bool inside_everywhere(const std::vector<typename Kernel::Triangle_3>& sheet,
                        const std::vector<typename Kernel::Triangle_3>& others) {
   const std::size_t step = std::max<std::size_t>(1, sheet.size() / max_wall_samples);
-  for (std::size_t i = 0; i < sheet.size(); i += step)
-    if (strictly_inside<Kernel>(others, CGAL::centroid(sheet[i])) != 1) return false;
+  for (std::size_t i = 0; i < sheet.size(); i += step) {
+    const int side = side_of_closed_surface<Kernel>(others, CGAL::centroid(sheet[i]));
+    if (side != 1 && side != 2) return false;
+  }
   return true;
 }
 
@@ -102,7 +107,7 @@ bool inside_everywhere(const std::vector<typename Kernel::Triangle_3>& sheet,
 
 /// Removes the internal walls of `polygons` (see above): each sheet whose every outline edge is
 /// shared by exactly three polygons, whose part without it is closed (every edge of two
-/// polygons), and which lies strictly inside that closed surface (the centroids of its
+/// polygons), and which lies strictly inside that closed surface or on it (the centroids of its
 /// triangles, by exact ray parity). Returns the walls and the polygons removed.
 template <class Point>
 std::pair<std::size_t, std::size_t> remove_internal_walls(
