@@ -1,11 +1,14 @@
 #!/bin/sh
-# Repairs real models from Debian packages that the project never tuned on: a fixed sample of the
-# furniture OBJ files of sweethome3d-furniture (multi-part, open, interpenetrating, polygons),
-# the dirty STL files of openscad-testing-data and the OBJ models of minetest-data. Downloads
-# the packages with `apt-get download` (no install) into .cache/debian-models, runs
-# `mesh_repair repair --batch` on the sample and prints the count of each outcome, the total
-# time and the slowest files. Extra arguments go to `repair` (e.g. --merge-intersecting-solids).
-# Usage: scripts/bench_debian_models.sh [repair options]
+# Repairs real models from Debian packages that the project never tuned on. MODELS=furniture
+# (default): a fixed sample of the furniture OBJ files of sweethome3d-furniture (multi-part,
+# open, interpenetrating, polygons), the dirty STL files of openscad-testing-data and the OBJ
+# models of minetest-data. MODELS=more: every OFF/OBJ/STL/PLY file of geomview and
+# assimp-testmodels (format variants, invalid files, game and Blender models) and of cura and
+# prusa-slicer (printer beds and parts: CAD STLs and OBJs). Downloads the packages with
+# `apt-get download` (no install) into .cache/debian-models, runs `mesh_repair repair --batch`
+# on the files and prints the count of each outcome, the total time and the slowest files. Extra
+# arguments go to `repair` (e.g. --merge-intersecting-solids).
+# Usage: [MODELS=more] scripts/bench_debian_models.sh [repair options]
 # MESH_REPAIR (default build/bin/mesh_repair), SAMPLE (default 60 furniture files), JOBS (2).
 set -eu
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
@@ -14,7 +17,13 @@ SAMPLE=${SAMPLE:-60}
 JOBS=${JOBS:-2}
 CACHE=$ROOT/.cache/debian-models
 mkdir -p "$CACHE/debs" "$CACHE/extracted"
-for package in sweethome3d-furniture openscad-testing-data minetest-data; do
+MODELS=${MODELS:-furniture}
+case $MODELS in
+  furniture) PACKAGES="sweethome3d-furniture openscad-testing-data minetest-data" ;;
+  more) PACKAGES="geomview assimp-testmodels cura prusa-slicer" ;;
+  *) echo "MODELS must be furniture or more, not $MODELS" >&2; exit 2 ;;
+esac
+for package in $PACKAGES; do
   if ! ls "$CACHE/debs/${package}_"*.deb >/dev/null 2>&1; then
     (cd "$CACHE/debs" && apt-get download "$package" >/dev/null 2>&1) ||
       { echo "cannot download $package (apt-get download)" >&2; exit 1; }
@@ -25,9 +34,16 @@ done
 WORK=$(mktemp -d "${TMPDIR:-/tmp}/mesh_repair_debian.XXXXXX")
 trap 'rm -rf "$WORK"' EXIT INT TERM
 mkdir -p "$WORK/in" "$WORK/out"
-python3 - "$CACHE/extracted" "$WORK/in" "$SAMPLE" <<'EOF'
+python3 - "$CACHE/extracted" "$WORK/in" "$SAMPLE" "$MODELS" <<'EOF'
 import glob, os, random, shutil, sys, zipfile
 extracted, out, sample = sys.argv[1], sys.argv[2], int(sys.argv[3])
+if sys.argv[4] == "more":
+    for package in ("geomview", "assimp-testmodels", "cura", "prusa-slicer"):
+        root = "%s/%s/usr/share/" % (extracted, package)
+        for p in sorted(glob.glob(root + "**/*", recursive=True)):
+            if os.path.isfile(p) and p.lower().rsplit(".", 1)[-1] in ("off", "obj", "stl", "ply"):
+                shutil.copy(p, out + "/" + p[len(root):].replace("/", "_").replace(" ", "_"))
+    sys.exit(0)
 objs = []
 for archive in sorted(glob.glob(extracted + "/sweethome3d-furniture/**/*.sh3f", recursive=True)):
     with zipfile.ZipFile(archive) as z:
