@@ -1010,7 +1010,8 @@ TEST(AutomaticRepair, AZeroVolumeWallBetweenTwoShellsIsRemovedAndTheShellsJoined
 }
 
 // Two cubes touching at one corner: the corner stays split (merging it would make a
-// non-manifold vertex); `manifold` says what a merging reader sees, and the repair is incomplete.
+// non-manifold vertex); `manifold` says what a merging reader sees. The contact is between two
+// parts, each a solid of its own: kept, like intersections between parts.
 TEST(AutomaticRepair, ShellsTouchingAtACornerAreKeptSplitAndReportedNonManifold) {
   Mesh mesh = cubes_sharing_a_face();
   for (auto v : mesh.vertices())
@@ -1021,11 +1022,54 @@ TEST(AutomaticRepair, ShellsTouchingAtACornerAreKeptSplitAndReportedNonManifold)
   EXPECT_FALSE(result.manifold);
   EXPECT_EQ(result.non_manifold_vertices_left, 1u);
   EXPECT_EQ(result.coincident_vertices_left, 1u);
-  EXPECT_EQ(result.status(), MR::Repair_status::incomplete);
-  ASSERT_FALSE(result.remaining.empty());
-  EXPECT_NE(result.remaining[0].find("non-manifold"), std::string::npos);
+  EXPECT_TRUE(result.non_manifold_only_between_components);
+  EXPECT_EQ(result.status(), MR::Repair_status::complete_except_kept)
+      << (result.remaining.empty() ? "" : result.remaining.front());
+  // The contact, and the face pairs that touch at the corner (CGAL's test counts a shared point).
+  ASSERT_EQ(result.kept.size(), 2u);
+  EXPECT_NE(result.kept[0].find("where separate components touch"), std::string::npos);
+  EXPECT_NE(result.kept[1].find("between separate components"), std::string::npos);
   // One definition: detect_defects sees the same non-manifold vertex.
   EXPECT_EQ(MR::counts(MR::detect_defects(mesh)).non_manifold_vertices, 1u);
+}
+
+/// Unit cubes at the cells (i, j) of a grid, each with its own eight vertices: cubes in
+/// neighbouring cells share a face written twice (a zero-volume wall).
+Mesh cubes_at(const std::vector<std::pair<int, int>>& cells) {
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t>> faces;
+  const std::size_t quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                                   {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (const auto& [x, y] : cells) {
+    const std::size_t offset = points.size();
+    for (int k = 0; k < 2; ++k)
+      for (int j = 0; j < 2; ++j)
+        for (int i = 0; i < 2; ++i) points.emplace_back(x + i, y + j, k);
+    for (const auto& q : quads) {
+      faces.push_back({offset + q[0], offset + q[1], offset + q[2]});
+      faces.push_back({offset + q[0], offset + q[2], offset + q[3]});
+    }
+  }
+  Mesh mesh;
+  support::polygon_soup_to_polygon_mesh(points, faces, mesh);
+  return mesh;
+}
+
+// A chain of seven cubes bent round so that its two ends touch along an edge: the walls between
+// the cubes go, the chain is one solid, and its contact with itself is no contact between parts:
+// the repair is incomplete.
+TEST(AutomaticRepair, ASolidTouchingItselfAlongAnEdgeIsIncomplete) {
+  Mesh mesh = cubes_at({{0, 1}, {0, 0}, {1, 0}, {2, 0}, {2, 1}, {2, 2}, {1, 2}});
+  const auto result = MR::automatic_repair(mesh);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  EXPECT_TRUE(CGAL::is_closed(mesh));
+  EXPECT_EQ(support::connected_components(mesh), 1u);
+  EXPECT_FALSE(result.manifold);
+  EXPECT_EQ(result.non_manifold_edges_left, 1u);
+  EXPECT_FALSE(result.non_manifold_only_between_components);
+  EXPECT_EQ(result.status(), MR::Repair_status::incomplete);
+  ASSERT_FALSE(result.remaining.empty());
+  EXPECT_NE(result.remaining[0].find("where sheets of the surface touch"), std::string::npos);
 }
 
 TEST(FillHoles, APatchMeetingAnotherPartOfTheMeshIsRolledBack) {

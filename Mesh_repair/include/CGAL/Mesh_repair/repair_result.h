@@ -76,6 +76,10 @@ struct Repair_result {
   /// coincident points (CGAL's `read_polygon_mesh`) sees, where separate sheets of the surface
   /// touch and are kept split (step "coincident elements", doc/automatic_repair.md).
   std::size_t non_manifold_vertices_left = 0, non_manifold_edges_left = 0;
+  /// True when every vertex at a position of those non-manifold vertices and edges belongs to
+  /// a connected component of its own: separate parts touching at a point or along a segment,
+  /// kept like the intersections between components (listed in `kept`).
+  bool non_manifold_only_between_components = false;
   /// Vertices at the position of another vertex (beyond the first at each position).
   std::size_t coincident_vertices_left = 0;
   /// `manifold`: no non-manifold vertex or edge, by position as well as in the halfedge structure.
@@ -109,6 +113,7 @@ inline void write_json(Json_writer& json, const Repair_result& r) {
       .field("manifold", r.manifold)
       .field("non_manifold_vertices_left", r.non_manifold_vertices_left)
       .field("non_manifold_edges_left", r.non_manifold_edges_left)
+      .field("non_manifold_only_between_components", r.non_manifold_only_between_components)
       .field("coincident_vertices_left", r.coincident_vertices_left)
       .field("cancelled", r.cancelled)
       .field("input_vertices", r.input_vertices)

@@ -31,6 +31,8 @@
 
 #include <algorithm>
 #include <array>
+#include <numeric>
+#include <set>
 #include <type_traits>
 #include <string>
 #include <vector>
@@ -46,6 +48,8 @@ struct Coincidence_census {
   std::size_t isolated_vertices_removed = 0;
   std::size_t halfedge_pairs_stitched = 0;
   std::size_t non_manifold_vertices = 0, non_manifold_edges = 0, coincident_vertices = 0;
+  /// Every vertex at a non-manifold position lies in a connected component of its own.
+  bool non_manifold_between_components_only = false;
   std::size_t duplicated_faces_left = 0;
   /// Positions of several vertices whose faces, merged, would form one fan (stitching could not
   /// join them: faces glued the wrong way round); the mesh is then rebuilt as a reader builds it.
@@ -118,6 +122,38 @@ class Coincident_elements {
     census.mergeable_positions = 0;
     for (std::size_t p = 0; p < positions.count; ++p)
       census.mergeable_positions += positions.shared[p] && !non_manifold[p] ? 1 : 0;
+    for (const auto& e : found.non_manifold_edges)
+      for (std::size_t v : {e.source, e.target}) non_manifold[positions.id_of_vertex[v]] = true;
+    census.non_manifold_between_components_only =
+        census.non_manifold_vertices + census.non_manifold_edges > 0 &&
+        copies_in_distinct_components(positions.id_of_vertex, non_manifold);
+  }
+
+  /// True when each marked position holds several vertices, each in a connected component of
+  /// its own (`position_of` maps vertex indices to positions); a vertex pinched in the halfedge
+  /// structure, or two copies in one component, is a contact of a part with itself.
+  template <class PositionOfVertex>
+  bool copies_in_distinct_components(const PositionOfVertex& position_of,
+                                     const std::vector<bool>& marked) const {
+    std::vector<std::size_t> parent(num_vertices(pm_));
+    std::iota(parent.begin(), parent.end(), std::size_t(0));
+    auto find = [&](std::size_t i) {
+      while (parent[i] != i) i = parent[i] = parent[parent[i]];
+      return i;
+    };
+    for (auto e : edges(pm_))
+      parent[find(get(vim_, source(e, pm_)))] = find(get(vim_, target(e, pm_)));
+    std::vector<std::set<std::size_t>> components(marked.size());
+    std::vector<std::size_t> copies(marked.size(), 0);
+    for (vertex_descriptor v : vertices(pm_)) {
+      const std::size_t p = position_of[get(vim_, v)];
+      if (!marked[p]) continue;
+      ++copies[p];
+      components[p].insert(find(get(vim_, v)));
+    }
+    for (std::size_t p = 0; p < marked.size(); ++p)
+      if (marked[p] && (copies[p] < 2 || components[p].size() != copies[p])) return false;
+    return true;
   }
 
   /// True when two vertices share a position (what stitching may merge).
@@ -252,6 +288,7 @@ void verify_again(const PolygonMesh& pm, const Repair_options& options,
   CGAL::Polygon_mesh_processing::non_manifold_vertices(pm, std::back_inserter(pinched));
   result.non_manifold_vertices_left = census.non_manifold_vertices;
   result.non_manifold_edges_left = census.non_manifold_edges;
+  result.non_manifold_only_between_components = census.non_manifold_between_components_only;
   result.coincident_vertices_left = census.coincident_vertices;
   result.manifold =
       pinched.empty() && census.non_manifold_vertices == 0 && census.non_manifold_edges == 0;
@@ -330,6 +367,15 @@ inline void sort_out_kept(Repair_result& result, const Repair_options& options) 
         has(line, "between separate components") ||
         (has(line, "(already in the input)") && !options.repair_self_intersections)) {
       result.kept.push_back(line);
+    } else if (line == "non-manifold vertices remain" &&
+               result.non_manifold_vertices_left + result.non_manifold_edges_left > 0 &&
+               result.non_manifold_only_between_components) {
+      result.kept.push_back(std::to_string(result.non_manifold_vertices_left) +
+                            " non-manifold vertex(es) and " +
+                            std::to_string(result.non_manifold_edges_left) +
+                            " non-manifold edge(s) where separate components touch (each stays "
+                            "a solid of its own; a reader that merges coincident points sees "
+                            "them)");
     } else if (line == "non-manifold vertices remain" &&
                result.non_manifold_vertices_left + result.non_manifold_edges_left > 0) {
       remaining.push_back(std::to_string(result.non_manifold_vertices_left) +
