@@ -153,19 +153,27 @@ TEST(RealWorld, TwoCubesTouchingAlongAFace) {
 }
 
 // Two closed cubes on a common edge and on a common corner: a merging reader sees a
-// non-manifold edge or vertex; the report says so (incomplete, listed).
+// non-manifold edge or vertex; the report says so. Two separate parts touching: kept (exit 3),
+// like parts that intersect.
 TEST(RealWorld, TwoCubesTouchingAlongAnEdgeOrAtACorner) {
   Soup edge = cube(0, 0, 0);
   edge.add(cube(1, 0, 1));
   const Repair_run along_edge = repair("cubes_edge", edge);
   EXPECT_FALSE(along_edge.reading.manifold);
-  EXPECT_EQ(along_edge.status, 1) << along_edge.out;
-  EXPECT_NE(along_edge.out.find("non-manifold"), std::string::npos) << along_edge.out;
+  EXPECT_EQ(along_edge.status, 3) << along_edge.out;
+  EXPECT_NE(along_edge.out.find("1 non-manifold edge(s) where separate components touch"),
+            std::string::npos)
+      << along_edge.out;
+  EXPECT_EQ(repair_member(along_edge, "non_manifold_only_between_components"), "true");
   Soup corner = cube(0, 0, 0);
   corner.add(cube(1, 1, 1));
   const Repair_run at_corner = repair("cubes_corner", corner);
   EXPECT_FALSE(at_corner.reading.manifold);
-  EXPECT_EQ(at_corner.status, 1) << at_corner.out;
+  EXPECT_EQ(at_corner.status, 3) << at_corner.out;
+  EXPECT_NE(at_corner.out.find("1 non-manifold vertex(es) and 0 non-manifold edge(s) where "
+                               "separate components touch"),
+            std::string::npos)
+      << at_corner.out;
 }
 
 // A cube whose faces use two distinct vertices at one corner.
