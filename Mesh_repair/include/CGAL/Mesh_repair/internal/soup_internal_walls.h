@@ -103,6 +103,18 @@ bool inside_everywhere(const std::vector<typename Kernel::Triangle_3>& sheet,
   return true;
 }
 
+// True when an edge has three polygons or more: one sort of the edges, so that the common soup
+// without any costs no map.
+inline bool has_edge_of_three_polygons(const std::vector<std::vector<std::size_t>>& polygons) {
+  std::vector<Edge> keys;
+  for (const auto& p : polygons)
+    for (std::size_t k = 0; k < p.size(); ++k) keys.push_back(edge(p[k], p[(k + 1) % p.size()]));
+  std::sort(keys.begin(), keys.end());
+  for (std::size_t i = 0; i + 2 < keys.size(); ++i)
+    if (keys[i] == keys[i + 2]) return true;
+  return false;
+}
+
 }  // namespace soup_walls
 
 /// Removes the internal walls of `polygons` (see above): each sheet whose every outline edge is
@@ -114,12 +126,13 @@ std::pair<std::size_t, std::size_t> remove_internal_walls(
     const std::vector<Point>& points, std::vector<std::vector<std::size_t>>& polygons) {
   using namespace soup_walls;
   using Kernel = typename CGAL::Kernel_traits<Point>::Kernel;
+  if (!has_edge_of_three_polygons(polygons)) return {0, 0};
   std::map<Edge, std::vector<std::size_t>> edges;
   for (std::size_t i = 0; i < polygons.size(); ++i)
     for (std::size_t k = 0; k < polygons[i].size(); ++k)
       edges[edge(polygons[i][k], polygons[i][(k + 1) % polygons[i].size()])].push_back(i);
   if (std::none_of(edges.begin(), edges.end(), [](const auto& e) { return e.second.size() == 3; }))
-    return {0, 0};
+    return {0, 0};  // only edges of four polygons or more
   const std::vector<std::size_t> sheet = sheets(polygons, edges);
   // Parts: polygons connected through any shared edge.
   std::vector<std::size_t> part(polygons.size());
