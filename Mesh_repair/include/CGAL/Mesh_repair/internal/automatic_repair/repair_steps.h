@@ -1006,7 +1006,7 @@ std::size_t autorefine_self_intersecting_parts(PolygonMesh& pm, VertexPointMap v
                        CGAL::Polygon_mesh_processing::area(
                            pm, CGAL::parameters::vertex_point_map(vpm).geom_traits(traits));
   const double distance_bound = max_autorefined_distance_fraction * mesh_bbox_diagonal(pm, vpm);
-  std::size_t replaced = 0, refused = 0, removed = 0, added = 0, open = 0, exact = 0;
+  std::size_t replaced = 0, refused = 0, removed = 0, added = 0, open = 0, exact = 0, separated = 0;
   double area_removed = 0;
   std::string last_reason;
   for (std::size_t c : candidates) {
@@ -1050,12 +1050,14 @@ std::size_t autorefine_self_intersecting_parts(PolygonMesh& pm, VertexPointMap v
     area_removed += area_lost;
     ++replaced;
     if (by_arrangement) ++exact;
+    separated += measures.touching_vertices_separated;
   }
   timer.count("parts_autorefined", double(replaced));
   timer.count("autorefined_faces_removed", double(removed));
   timer.count("autorefined_faces_added", double(added));
   timer.count("autorefined_area_removed", area_removed);
   if (exact > 0) timer.count("parts_autorefined_exactly", double(exact));
+  if (separated > 0) timer.count("touching_vertices_separated", double(separated));
   if (open > 0)
     timer.step().notes.push_back(std::to_string(open) +
                                  " self-intersecting open part(s) not autorefined (only a closed "
@@ -1246,7 +1248,8 @@ void step_merge_intersecting_solids(PolygonMesh& pm, VertexPointMap vpm, const G
   std::map<std::size_t, std::vector<std::size_t>> groups;  // by the group's first part
   for (std::size_t c = 0; c < components; ++c)
     if (involved[c]) groups[*linked.find(handle[c])].push_back(c);
-  std::size_t merged = 0, unions = 0, refused = 0, removed = 0, added = 0, exact_unions = 0;
+  std::size_t merged = 0, unions = 0, refused = 0, removed = 0, added = 0, exact_unions = 0,
+              touching_separated = 0;
   for (const auto& group : groups) {
     std::vector<Triangle_soup> solids;
     for (std::size_t c : group.second) solids.push_back(soup_of_faces(pm, vpm, faces_of[c]));
@@ -1258,9 +1261,11 @@ void step_merge_intersecting_solids(PolygonMesh& pm, VertexPointMap vpm, const G
                                    : union_of_solids(solids, united);
     if (!why.empty()) {
       // The exact arrangement takes coplanar contacts, and what the corefinement refused.
-      const std::string exact_why = union_of_solids_exactly(solids, united);
+      Solid_autorefinement measures;
+      const std::string exact_why = union_of_solids_exactly(solids, united, measures);
       why = exact_why.empty() ? std::string() : why + "; the exact arrangement: " + exact_why;
       exact_unions += exact_why.empty();
+      if (exact_why.empty()) touching_separated += measures.touching_vertices_separated;
     }
     if (!why.empty()) {
       ++refused;
@@ -1295,6 +1300,8 @@ void step_merge_intersecting_solids(PolygonMesh& pm, VertexPointMap vpm, const G
   timer.count("parts_merged", double(merged));
   timer.count("unions", double(unions));
   if (exact_unions > 0) timer.count("unions_by_exact_arrangement", double(exact_unions));
+  if (touching_separated > 0)
+    timer.count("touching_vertices_separated", double(touching_separated));
   timer.count("groups_kept_apart", double(refused));
   timer.count("faces_removed", double(removed));
   timer.count("faces_added", double(added));

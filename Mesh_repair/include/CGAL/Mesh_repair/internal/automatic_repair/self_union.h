@@ -49,9 +49,10 @@ CGAL_MESH_REPAIR_CORE_INLINE std::string outer_surface_of_solid(
 /// Writes into `out` the union of `solids` (at least two closed parts, each valid, free of
 /// self-intersections and bounding a volume, in either orientation) as the outer surface of
 /// the parts turned outward, for the groups that CGAL's corefinement does not take (coplanar
-/// faces that meet). Returns an empty string on success, else why not.
+/// faces that meet). Returns an empty string on success, else why not; `measures` as for
+/// `outer_surface_of_solid`.
 CGAL_MESH_REPAIR_CORE_INLINE std::string union_of_solids_exactly(
-    const std::vector<Triangle_soup>& solids, Triangle_soup& out,
+    const std::vector<Triangle_soup>& solids, Triangle_soup& out, Solid_autorefinement& measures,
     const Self_union_limits& limits = Self_union_limits());
 
 }  // namespace internal

@@ -5,6 +5,7 @@
 
 #include <CGAL/Mesh_repair/internal/automatic_repair/self_union.h>
 #include <CGAL/Mesh_repair/internal/automatic_repair/solid_soup.h>
+#include <CGAL/Mesh_repair/internal/automatic_repair/touching_fans.h>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Constrained_triangulation_plus_2.h>
@@ -19,6 +20,8 @@
 #include <CGAL/Projection_traits_yz_3.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/intersections.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/property_map.h>
 
 #include <boost/container/small_vector.hpp>
 
@@ -26,6 +29,7 @@
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <set>
 #include <unordered_map>
 #include <vector>
 
@@ -355,6 +359,109 @@ inline std::vector<Epeck_triangle> exact_faces(const Triangle_soup& soup) {
   return faces;
 }
 
+/// `out` as a closed mesh in `result`; an empty string, or why the outer surface cannot be
+/// used. `crossing` gets the intersecting pairs of faces, if any.
+inline std::string checked_outer_surface(
+    const Triangle_soup& out, Core_mesh& result,
+    std::vector<std::pair<Core_mesh::Face_index, Core_mesh::Face_index>>& crossing) {
+  result = Core_mesh();
+  const std::string why = solid_union::to_closed_mesh(out, result);
+  if (!why.empty()) return "its outer surface: " + why;
+  if (!result.is_valid(false)) return "its outer surface is not a valid mesh";
+  CGAL::Polygon_mesh_processing::self_intersections(result, std::back_inserter(crossing));
+  if (!crossing.empty()) return "its outer surface intersects itself once rounded to doubles";
+  return {};
+}
+
+/// The next way into the fans of each touching point that a face of `crossing` has (`point_of`
+/// as `touching_fans::separate` gives it); false when one has none left, or when a crossing
+/// face has no touching point.
+inline bool next_ways(
+    const Core_mesh& result,
+    const std::vector<std::pair<Core_mesh::Face_index, Core_mesh::Face_index>>& crossing,
+    const std::vector<std::ptrdiff_t>& point_of, std::vector<touching_fans::Into_fan>& ways) {
+  std::set<std::size_t> involved;
+  for (const auto& pair : crossing) {
+    bool touches = false;
+    for (auto f : {pair.first, pair.second})
+      for (auto v : vertices_around_face(result.halfedge(f), result))
+        if (point_of[v] >= 0) {
+          involved.insert(std::size_t(point_of[v]));
+          touches = true;
+        }
+    if (!touches) return false;
+  }
+  for (std::size_t k : involved) {
+    const int next = int(ways[k]) + 1;
+    if (next == touching_fans::number_of_ways) return false;
+    ways[k] = touching_fans::Into_fan(next);
+  }
+  return true;
+}
+
+/// Marks in `by_height` the touching points of the closed components of `result` thinner than
+/// `distance` (volume below area times distance: slivers of the arrangement that a move of
+/// `distance` may turn inside out); false when there is none left to mark.
+inline bool mark_thin_components(const Core_mesh& result,
+                                 const std::vector<std::ptrdiff_t>& point_of, double distance,
+                                 std::vector<char>& by_height) {
+  std::vector<std::size_t> component(result.number_of_faces());
+  const std::size_t count = CGAL::Polygon_mesh_processing::connected_components(
+      result, CGAL::make_property_map(component));
+  std::vector<double> area(count), volume(count);
+  for (auto f : result.faces()) {
+    const auto h = result.halfedge(f);
+    const auto &a = result.point(result.source(h)), &b = result.point(result.target(h)),
+               &c = result.point(result.target(result.next(h)));
+    area[component[f]] += std::sqrt(CGAL::squared_area(a, b, c));
+    volume[component[f]] +=
+        CGAL::determinant(a - CGAL::ORIGIN, b - CGAL::ORIGIN, c - CGAL::ORIGIN) / 6;
+  }
+  bool marked = false;
+  for (auto f : result.faces()) {
+    if (std::abs(volume[component[f]]) >= distance * area[component[f]]) continue;
+    for (auto v : vertices_around_face(result.halfedge(f), result))
+      if (point_of[v] >= 0 && !by_height[std::size_t(point_of[v])]) {
+        by_height[std::size_t(point_of[v])] = 1;
+        marked = true;
+      }
+  }
+  return marked;
+}
+
+/// `out`, whose surface touches itself at the points of `touching`, with those points split and
+/// moved apart by `distance` (`touching_fans::separate`), in `result`. Where a face crosses
+/// another, the next way into the fans of its touching points is tried; where a thin closed
+/// component keeps the surface from bounding a volume, its points move less
+/// (`mark_thin_components`). An empty string, or why no way gave a surface free of
+/// intersections that bounds a volume.
+inline std::string separated_outer_surface(const touching_fans::Touching& touching, double distance,
+                                           Triangle_soup& out, Core_mesh& result) {
+  const Triangle_soup unseparated = out;
+  std::vector<touching_fans::Into_fan> ways(touching.points.size(),
+                                            touching_fans::Into_fan::wedge_or_away);
+  std::vector<char> by_height(touching.points.size(), 0);
+  for (bool retry = true; retry;) {
+    out = unseparated;
+    std::vector<std::ptrdiff_t> point_of;
+    touching_fans::separate(out, touching, ways, distance, by_height, point_of);
+    std::vector<std::pair<Core_mesh::Face_index, Core_mesh::Face_index>> crossing;
+    const std::string why = checked_outer_surface(out, result, crossing);
+    if (!crossing.empty()) {
+      retry = next_ways(result, crossing, point_of, ways);
+      if (!retry) return why;
+    } else if (!why.empty()) {
+      return why;
+    } else if (!CGAL::Polygon_mesh_processing::does_bound_a_volume(result)) {
+      retry = mark_thin_components(result, point_of, distance, by_height);
+      if (!retry) return "its outer surface bounds no volume";
+    } else {
+      retry = false;
+    }
+  }
+  return {};
+}
+
 }  // namespace self_union
 
 CGAL_MESH_REPAIR_CORE_INLINE std::string outer_surface_of_solid(const Triangle_soup& solid,
@@ -461,14 +568,21 @@ CGAL_MESH_REPAIR_CORE_INLINE std::string outer_surface_of_solid(const Triangle_s
     out.polygons.push_back(std::move(polygon));
   }
 
-  // The result as the caller will use it: rounded to doubles, checked again.
+  // Where the outer surface touches itself at a point or along an edge (parts meeting corner
+  // to corner or edge to edge, or at a vertex the input already split), the fans of faces there
+  // are moved apart by about 1e-6 of the diagonal, each into its own side; where they still
+  // meet another face, the next way into them is tried.
+  const touching_fans::Touching touching = touching_fans::find_touching(out);
+  // A part whose faces only touch one another (no face cut) is left to the patches of the
+  // next step, which remove the faces that touch: moving the points apart would keep every
+  // contact of the part with the others.
+  const std::size_t solid_faces = std::size_t(std::count(flat.begin(), flat.end(), 0));
+  if (!touching.points.empty() && pieces.size() == solid_faces)
+    return "its faces only touch one another";
+  measures.touching_vertices_separated = touching.points.size();
   Core_mesh result;
-  why = solid_union::to_closed_mesh(out, result);
-  if (!why.empty()) return "its outer surface: " + why;
-  if (!result.is_valid(false)) return "its outer surface is not a valid mesh";
-  if (PMP::does_self_intersect(result))
-    return "its outer surface intersects itself once rounded to doubles";
-  if (!PMP::does_bound_a_volume(result)) return "its outer surface bounds no volume";
+  why = separated_outer_surface(touching, 1024 * grid_spacing(mesh), out, result);
+  if (!why.empty()) return why;
   measures.area_after = PMP::area(result);
   measures.largest_distance =
       PMP::max_distance_to_triangle_mesh<CGAL::Sequential_tag>(mesh.points(), result);
@@ -476,7 +590,8 @@ CGAL_MESH_REPAIR_CORE_INLINE std::string outer_surface_of_solid(const Triangle_s
 }
 
 CGAL_MESH_REPAIR_CORE_INLINE std::string union_of_solids_exactly(
-    const std::vector<Triangle_soup>& solids, Triangle_soup& out, const Self_union_limits& limits) {
+    const std::vector<Triangle_soup>& solids, Triangle_soup& out, Solid_autorefinement& measures,
+    const Self_union_limits& limits) {
   if (solids.size() < 2) return "fewer than two parts";
   Triangle_soup all;
   for (const Triangle_soup& solid : solids) {
@@ -493,7 +608,7 @@ CGAL_MESH_REPAIR_CORE_INLINE std::string union_of_solids_exactly(
       all.polygons.push_back(std::move(polygon));
     }
   }
-  Solid_autorefinement measures;
+  measures = Solid_autorefinement();
   return outer_surface_of_solid(all, out, measures, limits);
 }
 

@@ -37,6 +37,9 @@ struct Solid_autorefinement {
   double area_after = 0;
   /// Largest distance from a point of the part to the result.
   double largest_distance = 0;
+  /// Vertices where the result touched itself, given a point of their own per fan of faces
+  /// and moved apart (`separate_touching_fans`).
+  std::size_t touching_vertices_separated = 0;
 };
 
 /// Writes into `out` the closed part `solid` (a closed triangle mesh that may intersect itself)
