@@ -967,18 +967,18 @@ TEST(AutomaticRepair, AGrownHoleThatStaysOpenGetsItsFacesBack) {
   EXPECT_EQ(count_border_cycles(mesh), result.holes.failed);
 }
 
-/// Two closed unit cubes, one on top of the other, each with its own eight vertices: the top
-/// of the first and the bottom of the second are the same two triangles, reversed.
-Mesh cubes_sharing_a_face() {
+/// Unit cubes at the cells (i, j, k) of a grid, each with its own eight vertices: cubes in
+/// neighbouring cells share a face written twice (a zero-volume wall).
+Mesh cubes_at(const std::vector<std::array<int, 3>>& cells) {
   std::vector<Point> points;
   std::vector<std::vector<std::size_t>> faces;
   const std::size_t quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
                                    {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
-  for (int z = 0; z < 2; ++z) {
+  for (const auto& [x, y, z] : cells) {
     const std::size_t offset = points.size();
     for (int k = 0; k < 2; ++k)
       for (int j = 0; j < 2; ++j)
-        for (int i = 0; i < 2; ++i) points.emplace_back(i, j, z + k);
+        for (int i = 0; i < 2; ++i) points.emplace_back(x + i, y + j, z + k);
     for (const auto& q : quads) {
       faces.push_back({offset + q[0], offset + q[1], offset + q[2]});
       faces.push_back({offset + q[0], offset + q[2], offset + q[3]});
@@ -987,6 +987,12 @@ Mesh cubes_sharing_a_face() {
   Mesh mesh;
   support::polygon_soup_to_polygon_mesh(points, faces, mesh);
   return mesh;
+}
+
+/// Two closed unit cubes, one on top of the other: the top of the first and the bottom of the
+/// second are the same two triangles, reversed.
+Mesh cubes_sharing_a_face() {
+  return cubes_at({{0, 0, 0}, {0, 0, 1}});
 }
 
 // The wall between the cubes is a zero-volume pair: both faces go, the rims are stitched, and
@@ -1033,33 +1039,12 @@ TEST(AutomaticRepair, ShellsTouchingAtACornerAreKeptSplitAndReportedNonManifold)
   EXPECT_EQ(MR::counts(MR::detect_defects(mesh)).non_manifold_vertices, 1u);
 }
 
-/// Unit cubes at the cells (i, j) of a grid, each with its own eight vertices: cubes in
-/// neighbouring cells share a face written twice (a zero-volume wall).
-Mesh cubes_at(const std::vector<std::pair<int, int>>& cells) {
-  std::vector<Point> points;
-  std::vector<std::vector<std::size_t>> faces;
-  const std::size_t quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
-                                   {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
-  for (const auto& [x, y] : cells) {
-    const std::size_t offset = points.size();
-    for (int k = 0; k < 2; ++k)
-      for (int j = 0; j < 2; ++j)
-        for (int i = 0; i < 2; ++i) points.emplace_back(x + i, y + j, k);
-    for (const auto& q : quads) {
-      faces.push_back({offset + q[0], offset + q[1], offset + q[2]});
-      faces.push_back({offset + q[0], offset + q[2], offset + q[3]});
-    }
-  }
-  Mesh mesh;
-  support::polygon_soup_to_polygon_mesh(points, faces, mesh);
-  return mesh;
-}
-
 // A chain of seven cubes bent round so that its two ends touch along an edge: the walls between
 // the cubes go, the chain is one solid, and its contact with itself is no contact between parts:
 // the repair is incomplete.
 TEST(AutomaticRepair, ASolidTouchingItselfAlongAnEdgeIsIncomplete) {
-  Mesh mesh = cubes_at({{0, 1}, {0, 0}, {1, 0}, {2, 0}, {2, 1}, {2, 2}, {1, 2}});
+  Mesh mesh =
+      cubes_at({{0, 1, 0}, {0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {2, 1, 0}, {2, 2, 0}, {1, 2, 0}});
   const auto result = MR::automatic_repair(mesh);
   EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
   EXPECT_TRUE(CGAL::is_closed(mesh));

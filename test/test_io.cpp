@@ -180,18 +180,25 @@ std::string read_as_repair_does(const fs::path& path, Mesh& mesh, MR::Soup_repai
   return MR::read_mesh(path.string(), mesh, report, repair);
 }
 
+// Reads `path` as `repair` does and expects one wall of `polygons` polygons removed, leaving
+// `faces` faces in one closed, valid mesh.
+void expect_one_wall_removed(const fs::path& path, std::size_t polygons, std::size_t faces,
+                             MR::Soup_repair_report& report) {
+  Mesh mesh;
+  ASSERT_EQ(read_as_repair_does(path, mesh, report), "");
+  EXPECT_EQ(report.internal_walls_removed, 1u);
+  EXPECT_EQ(report.internal_wall_polygons_removed, polygons);
+  EXPECT_EQ(num_faces(mesh), faces);
+  EXPECT_TRUE(CGAL::is_closed(mesh));
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+}
+
 TEST(SoupRepair, AnInternalWallWrittenOnceIsRemovedWhenRepairing) {
   const fs::path path = scratch("two_cells.off");
   write_text(path, tube_with_sheet(0.3));
-  Mesh mesh;
   MR::Soup_repair_report report;
-  ASSERT_EQ(read_as_repair_does(path, mesh, report), "");
-  EXPECT_EQ(report.internal_walls_removed, 1u);
-  EXPECT_EQ(report.internal_wall_polygons_removed, 8u);
+  expect_one_wall_removed(path, 8u, 4u * 8u + 2u * 6u, report);
   EXPECT_EQ(report.non_manifold_edges, 0u);
-  EXPECT_EQ(num_faces(mesh), 4u * 8u + 2u * 6u);
-  EXPECT_TRUE(CGAL::is_closed(mesh));
-  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
   // CGAL's rule (check, the read-back of a written file) keeps the wall and splits its edges.
   Mesh as_read;
   ASSERT_EQ(MR::read_mesh(path.string(), as_read, report), "");
@@ -207,14 +214,8 @@ TEST(SoupRepair, AFaceGivenTwiceWithAnotherTriangulationIsRemovedWhenRepairing) 
              "OFF\n8 14 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
              "3 0 2 1\n3 0 3 2\n3 4 5 6\n3 4 6 7\n3 0 1 5\n3 0 5 4\n3 1 2 6\n3 1 6 5\n"
              "3 2 3 7\n3 2 7 6\n3 3 0 4\n3 3 4 7\n3 4 5 7\n3 5 6 7\n");
-  Mesh mesh;
   MR::Soup_repair_report report;
-  ASSERT_EQ(read_as_repair_does(path, mesh, report), "");
-  EXPECT_EQ(report.internal_walls_removed, 1u);
-  EXPECT_EQ(report.internal_wall_polygons_removed, 2u);
-  EXPECT_EQ(num_faces(mesh), 12u);
-  EXPECT_TRUE(CGAL::is_closed(mesh));
-  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  expect_one_wall_removed(path, 2u, 12u, report);
 }
 
 TEST(SoupRepair, ASheetLeavingTheClosedSurfaceIsNoInternalWall) {

@@ -182,8 +182,8 @@ inline std::vector<std::size_t> canonical_polygon(const std::vector<std::size_t>
 /// between two shells). Returns the groups and the polygons removed.
 inline std::pair<std::size_t, std::size_t> remove_zero_volume_walls(
     std::vector<std::vector<std::size_t>>& polygons) {
-  using Edge = std::pair<std::size_t, std::size_t>;
-  auto edge = [](std::size_t a, std::size_t b) { return Edge(std::min(a, b), std::max(a, b)); };
+  using soup_walls::Edge;
+  using soup_walls::edge;
   // Candidates: polygons on the same sorted point indices, then the same cyclic sequence.
   std::vector<std::pair<std::vector<std::size_t>, std::size_t>> keyed;
   keyed.reserve(polygons.size());

@@ -115,6 +115,66 @@ inline bool has_edge_of_three_polygons(const std::vector<std::vector<std::size_t
   return false;
 }
 
+using Edge_map = std::map<Edge, std::vector<std::size_t>>;
+
+// The part of each polygon: polygons connected through any shared edge.
+inline std::vector<std::size_t> parts_of(std::size_t count, const Edge_map& edges) {
+  std::vector<std::size_t> part(count);
+  std::iota(part.begin(), part.end(), std::size_t(0));
+  for (const auto& entry : edges)
+    for (std::size_t i : entry.second) part[find(part, i)] = find(part, entry.second[0]);
+  for (std::size_t i = 0; i < count; ++i) part[i] = find(part, i);
+  return part;
+}
+
+// Sheets without an edge of one polygon or of more than three.
+inline std::vector<std::size_t> candidate_sheets(const Edge_map& edges,
+                                                 const std::vector<std::size_t>& sheet) {
+  std::map<std::size_t, bool> candidate;  // sheet -> still a candidate
+  for (const auto& entry : edges) {
+    const std::size_t n = entry.second.size();
+    for (std::size_t i : entry.second) {
+      auto it = candidate.emplace(sheet[i], true).first;
+      if (n == 1 || n > 3) it->second = false;
+    }
+  }
+  std::vector<std::size_t> sheets;
+  for (const auto& [s, possible] : candidate)
+    if (possible) sheets.push_back(s);
+  return sheets;
+}
+
+// Whether `wall` has an edge of three polygons and its part, without it and the polygons
+// already removed, is closed (each of the part's edges has two polygons left, or none).
+inline bool closed_without(std::size_t wall, const std::vector<const Edge_map::value_type*>& edges,
+                           const std::vector<std::size_t>& sheet,
+                           const std::vector<bool>& removed) {
+  bool on_non_manifold_edge = false;
+  for (const auto* entry : edges) {
+    std::size_t n = 0;
+    bool used = false;
+    for (std::size_t i : entry->second) {
+      used = used || sheet[i] == wall;
+      n += sheet[i] != wall && !removed[i] ? 1 : 0;
+    }
+    on_non_manifold_edge = on_non_manifold_edge || (used && entry->second.size() == 3);
+    if (n != 0 && n != 2) return false;
+  }
+  return on_non_manifold_edge;
+}
+
+// Drops the polygons marked in `removed`, keeping the order of the others.
+inline void erase_polygons(std::vector<std::vector<std::size_t>>& polygons,
+                           const std::vector<bool>& removed) {
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < polygons.size(); ++i) {
+    if (removed[i]) continue;
+    if (kept != i) polygons[kept] = std::move(polygons[i]);
+    ++kept;
+  }
+  polygons.resize(kept);
+}
+
 }  // namespace soup_walls
 
 /// Removes the internal walls of `polygons` (see above): each sheet whose every outline edge is
@@ -125,72 +185,42 @@ template <class Point>
 std::pair<std::size_t, std::size_t> remove_internal_walls(
     const std::vector<Point>& points, std::vector<std::vector<std::size_t>>& polygons) {
   using namespace soup_walls;
-  using Kernel = typename CGAL::Kernel_traits<Point>::Kernel;
+  using Triangle = typename CGAL::Kernel_traits<Point>::Kernel::Triangle_3;
   if (!has_edge_of_three_polygons(polygons)) return {0, 0};
-  std::map<Edge, std::vector<std::size_t>> edges;
+  Edge_map edges;
   for (std::size_t i = 0; i < polygons.size(); ++i)
     for (std::size_t k = 0; k < polygons[i].size(); ++k)
       edges[edge(polygons[i][k], polygons[i][(k + 1) % polygons[i].size()])].push_back(i);
   if (std::none_of(edges.begin(), edges.end(), [](const auto& e) { return e.second.size() == 3; }))
     return {0, 0};  // only edges of four polygons or more
   const std::vector<std::size_t> sheet = sheets(polygons, edges);
-  // Parts: polygons connected through any shared edge.
-  std::vector<std::size_t> part(polygons.size());
-  std::iota(part.begin(), part.end(), std::size_t(0));
-  for (const auto& entry : edges)
-    for (std::size_t i : entry.second) part[find(part, i)] = find(part, entry.second[0]);
-  for (std::size_t i = 0; i < polygons.size(); ++i) part[i] = find(part, i);
-  // Candidates: sheets without an edge of one polygon or of more than three, with one of three.
-  std::map<std::size_t, bool> candidate;  // sheet -> still a candidate
-  for (const auto& entry : edges) {
-    const std::size_t n = entry.second.size();
-    for (std::size_t i : entry.second) {
-      auto it = candidate.emplace(sheet[i], true).first;
-      if (n == 1 || n > 3) it->second = false;
-    }
-  }
-  std::map<std::size_t, std::vector<const std::pair<const Edge, std::vector<std::size_t>>*>>
-      part_edges;
+  const std::vector<std::size_t> part = parts_of(polygons.size(), edges);
+  // Each part's edges and polygons, listed once for all its candidates.
+  std::map<std::size_t, std::vector<const Edge_map::value_type*>> part_edges;
   for (const auto& entry : edges) part_edges[part[entry.second[0]]].push_back(&entry);
+  std::map<std::size_t, std::vector<std::size_t>> part_polygons;
+  for (std::size_t i = 0; i < polygons.size(); ++i) part_polygons[part[i]].push_back(i);
   std::vector<bool> removed(polygons.size(), false);
   std::size_t walls = 0, polygons_removed = 0, examined = 0;
-  for (const auto& [wall, possible] : candidate) {
-    if (!possible) continue;
+  for (std::size_t wall : candidate_sheets(edges, sheet)) {
     if (++examined > max_internal_wall_candidates) break;
-    bool on_non_manifold_edge = false, closed_without = true;
-    for (const auto* entry : part_edges[part[wall]]) {
-      std::size_t n = 0;
-      bool used = false;
-      for (std::size_t i : entry->second) {
-        used = used || sheet[i] == wall;
-        n += sheet[i] != wall && !removed[i] ? 1 : 0;
-      }
-      on_non_manifold_edge = on_non_manifold_edge || (used && entry->second.size() == 3);
-      closed_without = closed_without && (n == 0 || n == 2);
-    }
-    if (!on_non_manifold_edge || !closed_without) continue;
-    std::vector<typename Kernel::Triangle_3> others, own;
-    for (std::size_t i = 0; i < polygons.size(); ++i) {
-      if (part[i] != part[wall] || removed[i]) continue;
+    if (!closed_without(wall, part_edges[part[wall]], sheet, removed)) continue;
+    std::vector<Triangle> others, own;
+    for (std::size_t i : part_polygons[part[wall]]) {
+      if (removed[i]) continue;
       const auto& q = polygons[i];
       for (std::size_t k = 1; k + 1 < q.size(); ++k) {
-        const typename Kernel::Triangle_3 t(points[q[0]], points[q[k]], points[q[k + 1]]);
+        const Triangle t(points[q[0]], points[q[k]], points[q[k + 1]]);
         if (!t.is_degenerate()) (sheet[i] == wall ? own : others).push_back(t);
       }
     }
-    if (own.empty() || !inside_everywhere<Kernel>(own, others)) continue;
+    if (own.empty() || !inside_everywhere<typename CGAL::Kernel_traits<Point>::Kernel>(own, others))
+      continue;
     ++walls;
-    for (std::size_t i = 0; i < polygons.size(); ++i)
+    for (std::size_t i : part_polygons[part[wall]])
       if (sheet[i] == wall) removed[i] = true, ++polygons_removed;
   }
-  if (walls == 0) return {0, 0};
-  std::size_t kept = 0;
-  for (std::size_t i = 0; i < polygons.size(); ++i) {
-    if (removed[i]) continue;
-    if (kept != i) polygons[kept] = std::move(polygons[i]);
-    ++kept;
-  }
-  polygons.resize(kept);
+  if (walls > 0) erase_polygons(polygons, removed);
   return {walls, polygons_removed};
 }
 
