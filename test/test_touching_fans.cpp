@@ -17,6 +17,8 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <iostream>
+#include <random>
 #include <set>
 #include <string>
 #include <vector>
@@ -142,6 +144,38 @@ TEST(TouchingFans, APartWhoseFacesOnlyTouchIsLeftToThePatches) {
   add_box(soup, Point(1, 1, 0), Point(2, 2, 1));
   const Checked checked = outer_surface(soup);
   EXPECT_EQ(checked.why, "its faces only touch one another");
+}
+
+// Boxes on a coarse integer grid, so that they meet corner to corner, edge to edge and face to
+// face, and cross: whatever the arrangement accepts is closed, valid, free of intersections,
+// bounds a volume and lies on the input's surface up to the moves; and most configurations are
+// accepted.
+TEST(TouchingFans, EveryAcceptedOuterSurfaceOfRandomGridBoxesIsASolid) {
+  std::mt19937 random(7);
+  std::uniform_int_distribution<int> corner(0, 3), size(1, 2);
+  int accepted = 0, separated = 0;
+  const int configurations = 60;
+  for (int c = 0; c < configurations; ++c) {
+    Soup soup;
+    for (int b = 0; b < 4; ++b) {
+      const int x = corner(random), y = corner(random), z = corner(random);
+      add_box(soup, Point(x, y, z), Point(x + size(random), y + size(random), z + size(random)));
+    }
+    const Checked checked = outer_surface(soup);
+    if (!checked.why.empty()) continue;
+    ++accepted;
+    separated += checked.measures.touching_vertices_separated > 0;
+    const Mesh& mesh = checked.mesh;
+    EXPECT_TRUE(CGAL::is_closed(mesh)) << c;
+    EXPECT_TRUE(mesh.is_valid(false)) << c;
+    EXPECT_FALSE(CGAL::Polygon_mesh_processing::does_self_intersect(mesh)) << c;
+    EXPECT_TRUE(CGAL::Polygon_mesh_processing::does_bound_a_volume(mesh)) << c;
+    EXPECT_LT(checked.farthest_from_input, 1e-5) << c;
+  }
+  EXPECT_GE(accepted, configurations * 3 / 4);
+  EXPECT_GT(separated, 0);
+  std::cout << accepted << " of " << configurations << " accepted, " << separated
+            << " with touching points moved apart\n";
 }
 
 }  // namespace
