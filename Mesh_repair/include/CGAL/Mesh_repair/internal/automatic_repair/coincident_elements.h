@@ -25,6 +25,7 @@
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_mesh_to_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/Polygon_mesh_processing/repair.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/boost/graph/Euler_operations.h>
@@ -47,6 +48,8 @@ struct Coincidence_census {
   std::size_t zero_volume_groups_removed = 0;  ///< groups removed whole (walls between shells)
   std::size_t isolated_vertices_removed = 0;
   std::size_t halfedge_pairs_stitched = 0;
+  /// Vertices that stitching pinched (two fans of faces at one vertex), split again.
+  std::size_t pinched_vertices_split = 0;
   std::size_t non_manifold_vertices = 0, non_manifold_edges = 0, coincident_vertices = 0;
   /// Every vertex at a non-manifold position lies in a connected component of its own.
   bool non_manifold_between_components_only = false;
@@ -320,11 +323,18 @@ void step_coincident_elements(PolygonMesh& pm, VertexPointMap vpm, const GeomTra
     changed = changed || census.halfedge_pairs_stitched > 0;
   }
   changed = changed || census.isolated_vertices_removed > 0;
+  // Stitching can join two fans of faces at one vertex (two sheets that touch there): the
+  // halfedge structure is then no valid polygon mesh. Such vertices are split again, one per
+  // fan, and kept like the other contacts.
+  census.pinched_vertices_split = CGAL::Polygon_mesh_processing::duplicate_non_manifold_vertices(
+      pm, CGAL::parameters::vertex_point_map(vpm));
   Coincident_elements<PolygonMesh, VertexPointMap, GeomTraits>(pm, vpm, traits).count(census);
   if (census.mergeable_positions > 0 && rebuild_as_read(pm, vpm)) {
     census.rebuilt = 1;
     census.halfedge_pairs_stitched +=
         CGAL::Polygon_mesh_processing::stitch_borders(pm, CGAL::parameters::vertex_point_map(vpm));
+    census.pinched_vertices_split += CGAL::Polygon_mesh_processing::duplicate_non_manifold_vertices(
+        pm, CGAL::parameters::vertex_point_map(vpm));
     changed = true;
     Coincident_elements<PolygonMesh, VertexPointMap, GeomTraits>(pm, vpm, traits).count(census);
   }
@@ -339,6 +349,7 @@ void step_coincident_elements(PolygonMesh& pm, VertexPointMap vpm, const GeomTra
   timer.count("zero_volume_groups_removed", double(census.zero_volume_groups_removed));
   timer.count("isolated_vertices_removed", double(census.isolated_vertices_removed));
   timer.count("halfedge_pairs_stitched", double(census.halfedge_pairs_stitched));
+  timer.count("pinched_vertices_split", double(census.pinched_vertices_split));
   timer.count("non_manifold_vertices_kept", double(census.non_manifold_vertices));
   timer.count("non_manifold_edges_kept", double(census.non_manifold_edges));
   timer.count("coincident_vertices_kept", double(census.coincident_vertices));
