@@ -263,7 +263,9 @@ inline void separate(Triangle_soup& soup, const Touching& touching,
     into.push_back(ways_into_fans(soup, touching, k, ways[k]));
   point_of.assign(soup.points.size(), -1);
   for (std::size_t k = 0; k < touching.points.size(); ++k) {
-    const auto& [v, fans] = touching.points[k];
+    // Not a structured binding: the lambda below captures them (C++17 does not allow it).
+    const std::size_t v = touching.points[k].first;
+    const auto& fans = touching.points[k].second;
     const Core_mesh::Point origin = soup.points[v];
     point_of[v] = std::ptrdiff_t(k);
     const auto moved = [&](std::size_t i) {
