@@ -30,6 +30,7 @@
 #include <CGAL/Mesh_repair/soup_repair_report.h>
 #include <CGAL/Mesh_repair/internal/polygon_projection.h>
 #include <CGAL/Mesh_repair/internal/soup_validation.h>
+#include <CGAL/Mesh_repair/internal/soup_edge.h>
 #include <CGAL/Mesh_repair/internal/soup_internal_walls.h>
 #include <CGAL/Mesh_repair/internal/soup_to_mesh.h>
 
@@ -142,12 +143,12 @@ namespace internal {
 // Counts what `orient_polygon_soup` reports, with locations.
 struct Orientation_counter : CGAL::Polygon_mesh_processing::Default_orientation_visitor {
   Soup_repair_report* report;
-  std::set<std::pair<std::size_t, std::size_t>> seen_edges;
+  std::set<Soup_edge> seen_edges;
   std::set<std::size_t> seen_vertices;
   explicit Orientation_counter(Soup_repair_report* r) : report(r) {}
   // CGAL calls this once per polygon around the edge; count each edge once.
   void non_manifold_edge(std::size_t a, std::size_t b, std::size_t) {
-    if (!seen_edges.insert(std::make_pair(std::min(a, b), std::max(a, b))).second) return;
+    if (!seen_edges.insert(soup_edge(a, b)).second) return;
     ++report->non_manifold_edges;
     report->non_manifold_edge_points.emplace_back(a, b);
   }
@@ -182,8 +183,6 @@ inline std::vector<std::size_t> canonical_polygon(const std::vector<std::size_t>
 /// between two shells). Returns the groups and the polygons removed.
 inline std::pair<std::size_t, std::size_t> remove_zero_volume_walls(
     std::vector<std::vector<std::size_t>>& polygons) {
-  using soup_walls::Edge;
-  using soup_walls::edge;
   // Candidates: polygons on the same sorted point indices, then the same cyclic sequence.
   std::vector<std::pair<std::vector<std::size_t>, std::size_t>> keyed;
   keyed.reserve(polygons.size());
@@ -213,15 +212,15 @@ inline std::pair<std::size_t, std::size_t> remove_zero_volume_walls(
   for (std::size_t i = 0; i < polygons.size(); ++i) class_of[i] = groups.size() + i;
   for (std::size_t g = 0; g < groups.size(); ++g)
     for (std::size_t i : groups[g]) class_of[i] = g;
-  std::map<Edge, std::vector<std::size_t>> classes;
+  std::map<Soup_edge, std::vector<std::size_t>> classes;
   for (const auto& group : groups) {
     const auto& p = polygons[group.front()];
-    for (std::size_t k = 0; k < p.size(); ++k) classes[edge(p[k], p[(k + 1) % p.size()])];
+    for (std::size_t k = 0; k < p.size(); ++k) classes[soup_edge(p[k], p[(k + 1) % p.size()])];
   }
   for (std::size_t i = 0; i < polygons.size(); ++i) {
     const auto& p = polygons[i];
     for (std::size_t k = 0; k < p.size(); ++k) {
-      auto it = classes.find(edge(p[k], p[(k + 1) % p.size()]));
+      auto it = classes.find(soup_edge(p[k], p[(k + 1) % p.size()]));
       if (it != classes.end()) it->second.push_back(class_of[i]);
     }
   }
@@ -235,7 +234,7 @@ inline std::pair<std::size_t, std::size_t> remove_zero_volume_walls(
     const auto& p = polygons[group.front()];
     std::size_t excess_keep_one = 0, excess_remove_all = 0;
     for (std::size_t k = 0; k < p.size(); ++k) {
-      const std::size_t others = classes[edge(p[k], p[(k + 1) % p.size()])].size() - 1;
+      const std::size_t others = classes[soup_edge(p[k], p[(k + 1) % p.size()])].size() - 1;
       excess_keep_one += others + 1 > 2 ? others - 1 : 0;
       excess_remove_all += others > 2 ? others - 2 : 0;
     }
@@ -244,13 +243,7 @@ inline std::pair<std::size_t, std::size_t> remove_zero_volume_walls(
     removed += group.size();
     for (std::size_t i : group) doomed[i] = true;
   }
-  std::size_t kept = 0;
-  for (std::size_t i = 0; i < polygons.size(); ++i) {
-    if (doomed[i]) continue;
-    if (kept != i) polygons[kept] = std::move(polygons[i]);
-    ++kept;
-  }
-  polygons.resize(kept);
+  soup_walls::erase_polygons(polygons, doomed);
   return {walls, removed};
 }
 

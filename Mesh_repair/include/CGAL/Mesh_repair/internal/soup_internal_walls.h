@@ -14,6 +14,8 @@
 #include <CGAL/Intersections_3/Ray_3_Triangle_3.h>
 #include <CGAL/Kernel_traits.h>
 
+#include <CGAL/Mesh_repair/internal/soup_edge.h>
+
 #include <algorithm>
 #include <cstddef>
 #include <map>
@@ -32,12 +34,6 @@ constexpr std::size_t max_wall_samples = 32;
 
 namespace soup_walls {
 
-using Edge = std::pair<std::size_t, std::size_t>;
-
-inline Edge edge(std::size_t a, std::size_t b) {
-  return Edge(std::min(a, b), std::max(a, b));
-}
-
 inline std::size_t find(std::vector<std::size_t>& parent, std::size_t i) {
   while (parent[i] != i) i = parent[i] = parent[parent[i]];
   return i;
@@ -45,7 +41,7 @@ inline std::size_t find(std::vector<std::size_t>& parent, std::size_t i) {
 
 // The polygons of each sheet: connected through edges of exactly two polygons.
 inline std::vector<std::size_t> sheets(const std::vector<std::vector<std::size_t>>& polygons,
-                                       const std::map<Edge, std::vector<std::size_t>>& edges) {
+                                       const std::map<Soup_edge, std::vector<std::size_t>>& edges) {
   std::vector<std::size_t> parent(polygons.size());
   std::iota(parent.begin(), parent.end(), std::size_t(0));
   for (const auto& entry : edges)
@@ -106,16 +102,17 @@ bool inside_everywhere(const std::vector<typename Kernel::Triangle_3>& sheet,
 // True when an edge has three polygons or more: one sort of the edges, so that the common soup
 // without any costs no map.
 inline bool has_edge_of_three_polygons(const std::vector<std::vector<std::size_t>>& polygons) {
-  std::vector<Edge> keys;
+  std::vector<Soup_edge> keys;
   for (const auto& p : polygons)
-    for (std::size_t k = 0; k < p.size(); ++k) keys.push_back(edge(p[k], p[(k + 1) % p.size()]));
+    for (std::size_t k = 0; k < p.size(); ++k)
+      keys.push_back(soup_edge(p[k], p[(k + 1) % p.size()]));
   std::sort(keys.begin(), keys.end());
   for (std::size_t i = 0; i + 2 < keys.size(); ++i)
     if (keys[i] == keys[i + 2]) return true;
   return false;
 }
 
-using Edge_map = std::map<Edge, std::vector<std::size_t>>;
+using Edge_map = std::map<Soup_edge, std::vector<std::size_t>>;
 
 // The part of each polygon: polygons connected through any shared edge.
 inline std::vector<std::size_t> parts_of(std::size_t count, const Edge_map& edges) {
@@ -190,7 +187,7 @@ std::pair<std::size_t, std::size_t> remove_internal_walls(
   Edge_map edges;
   for (std::size_t i = 0; i < polygons.size(); ++i)
     for (std::size_t k = 0; k < polygons[i].size(); ++k)
-      edges[edge(polygons[i][k], polygons[i][(k + 1) % polygons[i].size()])].push_back(i);
+      edges[soup_edge(polygons[i][k], polygons[i][(k + 1) % polygons[i].size()])].push_back(i);
   if (std::none_of(edges.begin(), edges.end(), [](const auto& e) { return e.second.size() == 3; }))
     return {0, 0};  // only edges of four polygons or more
   const std::vector<std::size_t> sheet = sheets(polygons, edges);

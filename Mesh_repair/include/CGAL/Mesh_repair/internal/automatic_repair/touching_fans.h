@@ -9,6 +9,7 @@
 // point of its own, moved a little into its own side (self_union_impl.h).
 
 #include <CGAL/Mesh_repair/internal/automatic_repair/solid_union.h>
+#include <CGAL/Mesh_repair/internal/soup_edge.h>
 
 #include <boost/container/small_vector.hpp>
 
@@ -27,7 +28,6 @@ namespace internal {
 namespace touching_fans {
 
 using Vector = CGAL::Vector_3<Core_traits>;
-using Edge = std::pair<std::size_t, std::size_t>;  // first < second
 
 /// The triangles of `soup` around the edge (`a`, `b`), `a` < `b`, of a closed oriented surface
 /// that meets itself along the edge (four triangles or more), paired as they bound the solid
@@ -85,7 +85,7 @@ inline Vector unit(const Vector& u) {
 /// The unit vector, orthogonal to the edge (`a`, `b`), that bisects the wedge between the
 /// triangles `f` (running from `a` to `b`) and `g`, clockwise from `f` around the direction
 /// from `a` to `b` (as `wedges_around_edge` pairs them).
-inline Vector wedge_bisector(const Triangle_soup& soup, const Edge& edge, std::size_t f,
+inline Vector wedge_bisector(const Triangle_soup& soup, const Soup_edge& edge, std::size_t f,
                              std::size_t g) {
   const auto& P = soup.points;
   const auto &a = P[edge.first], &b = P[edge.second];
@@ -120,9 +120,9 @@ constexpr int number_of_ways = 6;
 /// The points where the surface touches itself, each with its fans of triangles.
 struct Touching {
   std::vector<std::pair<std::size_t, std::vector<std::vector<std::size_t>>>> points;
-  std::map<Edge, std::vector<std::size_t>> triangles_on_edge;
+  std::map<Soup_edge, std::vector<std::size_t>> triangles_on_edge;
   /// Triangles joined across an edge: the two of a manifold edge, the pairs of a touching one.
-  std::map<Edge, std::vector<std::pair<std::size_t, std::size_t>>> joined;
+  std::map<Soup_edge, std::vector<std::pair<std::size_t, std::size_t>>> joined;
 };
 
 inline Touching find_touching(const Triangle_soup& soup) {
@@ -131,7 +131,7 @@ inline Touching find_touching(const Triangle_soup& soup) {
   for (std::size_t t = 0; t < soup.polygons.size(); ++t)
     for (std::size_t i = 0; i < 3; ++i) {
       const std::size_t a = soup.polygons[t][i], b = soup.polygons[t][(i + 1) % 3];
-      touching.triangles_on_edge[{std::min(a, b), std::max(a, b)}].push_back(t);
+      touching.triangles_on_edge[soup_edge(a, b)].push_back(t);
       triangles_at[a].push_back(t);
     }
   for (const auto& [edge, triangles] : touching.triangles_on_edge) {
@@ -149,7 +149,7 @@ inline Touching find_touching(const Triangle_soup& soup) {
     };
     for (std::size_t t : triangles_at[v])
       for (std::size_t w : soup.polygons[t]) {
-        const auto found = touching.joined.find({std::min(v, w), std::max(v, w)});
+        const auto found = touching.joined.find(soup_edge(v, w));
         if (w == v || found == touching.joined.end()) continue;
         for (const auto& pair : found->second) fan[find(pair.first)] = find(pair.second);
       }
@@ -188,10 +188,10 @@ inline Vector against_normal(const Triangle_soup& soup, const std::vector<std::s
 inline bool wedge_of_fan(const Triangle_soup& soup, const Touching& touching, std::size_t v,
                          const std::vector<std::size_t>& fan, Vector& bisector) {
   Vector sum = CGAL::NULL_VECTOR;
-  std::set<Edge> seen;
+  std::set<Soup_edge> seen;
   for (std::size_t t : fan)
     for (std::size_t w : soup.polygons[t]) {
-      const Edge edge{std::min(v, w), std::max(v, w)};
+      const Soup_edge edge = soup_edge(v, w);
       if (w == v || touching.triangles_on_edge.at(edge).size() < 3 || !seen.insert(edge).second)
         continue;
       for (const auto& [f, g] : touching.joined.at(edge))
