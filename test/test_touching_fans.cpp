@@ -2,9 +2,12 @@
 // a corner (touching_fans.h, self_union_impl.h): the faces around each touching edge are paired
 // as the wedges of the solids, each fan gets a point of its own, moved about 1e-6 of the
 // diagonal into its own side, and the result is closed, valid, free of intersections, bounds the
-// union's volume and lies within that distance of the input.
+// union's volume and lies within that distance of the input. Where the rounding of the result to
+// doubles folds faces across others, the thin solids of the arrangement that cross are dropped
+// (thin_solids.h).
 #include <CGAL/Mesh_repair/internal/automatic_repair/self_union.h>
 #include <CGAL/Mesh_repair/internal/automatic_repair/solid_soup.h>
+#include <CGAL/Mesh_repair/internal/automatic_repair/thin_solids.h>
 #include <CGAL/Mesh_repair/internal/automatic_repair/touching_fans.h>
 
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
@@ -176,6 +179,63 @@ TEST(TouchingFans, EveryAcceptedOuterSurfaceOfRandomGridBoxesIsASolid) {
   EXPECT_GT(separated, 0);
   std::cout << accepted << " of " << configurations << " accepted, " << separated
             << " with touching points moved apart\n";
+}
+
+/// The unit cube and a tetrahedron of height `height` over the triangle (0.5, 0.2, 0.5),
+/// (1.5, 0.5, 0.5), (0.5, 0.8, 0.5), which crosses the cube's face x = 1: two components.
+Mesh cube_crossed_by_tetrahedron(double height) {
+  Soup soup;
+  add_box(soup, Point(0, 0, 0), Point(1, 1, 1));
+  const std::size_t a = soup.points.size();
+  soup.points.insert(soup.points.end(), {Point(0.5, 0.2, 0.5), Point(1.5, 0.5, 0.5),
+                                         Point(0.5, 0.8, 0.5), Point(0.8, 0.5, 0.5 + height)});
+  const std::size_t b = a + 1, c = a + 2, d = a + 3;
+  soup.polygons.insert(soup.polygons.end(), {{a, c, b}, {a, b, d}, {b, c, d}, {c, a, d}});
+  Mesh mesh;
+  EXPECT_EQ(MRI::solid_union::to_closed_mesh(soup, mesh), "");
+  return mesh;
+}
+
+MRI::self_union::Face_pairs crossing_pairs(const Mesh& mesh) {
+  MRI::self_union::Face_pairs pairs;
+  CGAL::Polygon_mesh_processing::self_intersections(mesh, std::back_inserter(pairs));
+  return pairs;
+}
+
+TEST(ThinSolids, AThinSolidCrossingAnotherPartIsDroppedAndTheRestKept) {
+  const Mesh mesh = cube_crossed_by_tetrahedron(1e-7);
+  const auto crossing = crossing_pairs(mesh);
+  ASSERT_FALSE(crossing.empty());
+  EXPECT_TRUE(MRI::self_union::crosses_between_components(mesh, crossing));
+  Soup out;
+  EXPECT_EQ(MRI::self_union::drop_thin_crossing_components(mesh, crossing, 1e-6, out), 1u);
+  Mesh kept;
+  ASSERT_EQ(MRI::solid_union::to_closed_mesh(out, kept), "");
+  EXPECT_EQ(kept.number_of_faces(), 12u);
+  EXPECT_FALSE(CGAL::Polygon_mesh_processing::does_self_intersect(kept));
+  EXPECT_NEAR(CGAL::Polygon_mesh_processing::volume(kept), 1.0, 1e-12);
+}
+
+TEST(ThinSolids, ASolidThickerThanTheDistanceIsKept) {
+  const Mesh mesh = cube_crossed_by_tetrahedron(0.3);
+  const auto crossing = crossing_pairs(mesh);
+  ASSERT_FALSE(crossing.empty());
+  Soup out;
+  EXPECT_EQ(MRI::self_union::drop_thin_crossing_components(mesh, crossing, 1e-6, out), 0u);
+  EXPECT_TRUE(out.polygons.empty());
+  // Thinner than a larger distance: its volume (0.03) is below its area (about 1.0) times 0.1.
+  EXPECT_EQ(MRI::self_union::drop_thin_crossing_components(mesh, crossing, 0.1, out), 1u);
+}
+
+TEST(ThinSolids, CrossingsInsideOneComponentAreNotBetweenComponents) {
+  Soup soup;
+  add_box(soup, Point(0, 0, 0), Point(1, 1, 1));
+  soup.points[7] = Point(0.5, 0.5, -0.5);  // the corner (1, 1, 1) pushed through the bottom
+  Mesh mesh;
+  ASSERT_EQ(MRI::solid_union::to_closed_mesh(soup, mesh), "");
+  const auto crossing = crossing_pairs(mesh);
+  ASSERT_FALSE(crossing.empty());
+  EXPECT_FALSE(MRI::self_union::crosses_between_components(mesh, crossing));
 }
 
 }  // namespace

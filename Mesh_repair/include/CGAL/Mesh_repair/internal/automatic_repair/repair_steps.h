@@ -112,6 +112,10 @@ constexpr double max_replaced_part_share = 0.25;
 /// bounding-box diagonal from the result: past that the fold is not a defect but a shape.
 constexpr double max_autorefined_area_fraction = 0.01;
 constexpr double max_autorefined_distance_fraction = 0.005;
+/// The exact arrangement of a part is used even where rounding its points to doubles folds a few
+/// faces across others, as long as those pairs are at most this share of the part's intersecting
+/// pairs: the region replacement that follows removes them like the input's own.
+constexpr double max_rounding_crossing_share = 0.25;
 /// Spike vertices are moved back in at most this many rounds (a round moves the likeliest spike
 /// of each intersecting pair; a spike hidden behind another shows in the next round).
 constexpr int max_spike_relaxation_rounds = 6;
@@ -1006,8 +1010,13 @@ std::size_t autorefine_self_intersecting_parts(PolygonMesh& pm, VertexPointMap v
                        CGAL::Polygon_mesh_processing::area(
                            pm, CGAL::parameters::vertex_point_map(vpm).geom_traits(traits));
   const double distance_bound = max_autorefined_distance_fraction * mesh_bbox_diagonal(pm, vpm);
-  std::size_t replaced = 0, refused = 0, removed = 0, added = 0, open = 0, exact = 0, separated = 0;
+  std::size_t replaced = 0, refused = 0, removed = 0, added = 0, open = 0, exact = 0, separated = 0,
+              rounding_crossings = 0, thin_dropped = 0;
   double area_removed = 0;
+  // The region replacement that follows takes the few faces that the rounding of the exact
+  // arrangement folds across others.
+  Self_union_limits arrangement_limits;
+  arrangement_limits.max_rounding_crossing_share = max_rounding_crossing_share;
   std::string last_reason;
   for (std::size_t c : candidates) {
     if (!part_is_closed(pm, faces_of[c])) {
@@ -1023,7 +1032,7 @@ std::size_t autorefine_self_intersecting_parts(PolygonMesh& pm, VertexPointMap v
     const bool by_arrangement = !why.empty();
     if (by_arrangement) {
       measures = Solid_autorefinement();
-      why = outer_surface_of_solid(part, refined, measures);
+      why = outer_surface_of_solid(part, refined, measures, arrangement_limits);
     }
     const double area_lost = measures.area_before - measures.area_after;
     if (why.empty() && area_lost > area_budget)
@@ -1051,6 +1060,8 @@ std::size_t autorefine_self_intersecting_parts(PolygonMesh& pm, VertexPointMap v
     ++replaced;
     if (by_arrangement) ++exact;
     separated += measures.touching_vertices_separated;
+    rounding_crossings += measures.rounding_crossings;
+    thin_dropped += measures.thin_solids_dropped;
   }
   timer.count("parts_autorefined", double(replaced));
   timer.count("autorefined_faces_removed", double(removed));
@@ -1058,6 +1069,9 @@ std::size_t autorefine_self_intersecting_parts(PolygonMesh& pm, VertexPointMap v
   timer.count("autorefined_area_removed", area_removed);
   if (exact > 0) timer.count("parts_autorefined_exactly", double(exact));
   if (separated > 0) timer.count("touching_vertices_separated", double(separated));
+  if (thin_dropped > 0) timer.count("thin_solids_dropped", double(thin_dropped));
+  if (rounding_crossings > 0)
+    timer.count("rounding_crossings_left_to_patches", double(rounding_crossings));
   if (open > 0)
     timer.step().notes.push_back(std::to_string(open) +
                                  " self-intersecting open part(s) not autorefined (only a closed "
@@ -1249,7 +1263,7 @@ void step_merge_intersecting_solids(PolygonMesh& pm, VertexPointMap vpm, const G
   for (std::size_t c = 0; c < components; ++c)
     if (involved[c]) groups[*linked.find(handle[c])].push_back(c);
   std::size_t merged = 0, unions = 0, refused = 0, removed = 0, added = 0, exact_unions = 0,
-              touching_separated = 0;
+              touching_separated = 0, thin_dropped = 0;
   for (const auto& group : groups) {
     std::vector<Triangle_soup> solids;
     for (std::size_t c : group.second) solids.push_back(soup_of_faces(pm, vpm, faces_of[c]));
@@ -1265,7 +1279,10 @@ void step_merge_intersecting_solids(PolygonMesh& pm, VertexPointMap vpm, const G
       const std::string exact_why = union_of_solids_exactly(solids, united, measures);
       why = exact_why.empty() ? std::string() : why + "; the exact arrangement: " + exact_why;
       exact_unions += exact_why.empty();
-      if (exact_why.empty()) touching_separated += measures.touching_vertices_separated;
+      if (exact_why.empty()) {
+        touching_separated += measures.touching_vertices_separated;
+        thin_dropped += measures.thin_solids_dropped;
+      }
     }
     if (!why.empty()) {
       ++refused;
@@ -1302,6 +1319,7 @@ void step_merge_intersecting_solids(PolygonMesh& pm, VertexPointMap vpm, const G
   if (exact_unions > 0) timer.count("unions_by_exact_arrangement", double(exact_unions));
   if (touching_separated > 0)
     timer.count("touching_vertices_separated", double(touching_separated));
+  if (thin_dropped > 0) timer.count("thin_solids_dropped", double(thin_dropped));
   timer.count("groups_kept_apart", double(refused));
   timer.count("faces_removed", double(removed));
   timer.count("faces_added", double(added));

@@ -33,6 +33,11 @@ struct Self_union_limits {
   /// Refused when (pieces to classify) x (faces) exceeds this (each classification casts a ray
   /// against every face whose box it may cross).
   double max_ray_tests = 2e8;
+  /// A result whose faces cross one another once its exact points are rounded to doubles (needle
+  /// pieces of nearly parallel cuts, folded by the rounding) is accepted when its crossing pairs
+  /// are at most this share of the part's intersecting pairs, for a caller that replaces them
+  /// by patches next (`Solid_autorefinement::rounding_crossings`); 0: refused.
+  double max_rounding_crossing_share = 0;
 };
 
 /// Writes into `out` the outer surface of the closed part `solid` (a closed triangle mesh that
@@ -40,8 +45,8 @@ struct Self_union_limits {
 /// the part's winding number is zero from points where it is not, oriented towards the zero
 /// side. Intersection points are computed exactly and rounded to doubles at the end. Returns an
 /// empty string when the result is closed, valid, free of self-intersections and bounds a
-/// volume, else why not (then `out` is unspecified); `measures` as for
-/// `remove_self_intersections_of_solid`.
+/// volume (or crosses itself within `limits.max_rounding_crossing_share`), else why not (then
+/// `out` is unspecified); `measures` as for `remove_self_intersections_of_solid`.
 CGAL_MESH_REPAIR_CORE_INLINE std::string outer_surface_of_solid(
     const Triangle_soup& solid, Triangle_soup& out, Solid_autorefinement& measures,
     const Self_union_limits& limits = Self_union_limits());

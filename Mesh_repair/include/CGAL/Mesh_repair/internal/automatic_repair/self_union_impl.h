@@ -5,7 +5,9 @@
 
 #include <CGAL/Mesh_repair/internal/automatic_repair/self_union.h>
 #include <CGAL/Mesh_repair/internal/automatic_repair/solid_soup.h>
+#include <CGAL/Mesh_repair/internal/automatic_repair/thin_solids.h>
 #include <CGAL/Mesh_repair/internal/automatic_repair/touching_fans.h>
+#include <CGAL/Mesh_repair/internal/soup_edge.h>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Constrained_triangulation_plus_2.h>
@@ -191,12 +193,11 @@ inline std::vector<std::size_t> patches_of(const std::vector<Piece_group>& group
     while (parent[g] != g) g = parent[g] = parent[parent[g]];
     return g;
   };
-  std::map<std::pair<std::size_t, std::size_t>, boost::container::small_vector<std::size_t, 2>>
-      edges;
+  std::map<Soup_edge, boost::container::small_vector<std::size_t, 2>> edges;
   for (std::size_t g = 0; g < groups.size(); ++g)
     for (int i = 0; i < 3; ++i) {
       const std::size_t a = groups[g].face[i], b = groups[g].face[(i + 1) % 3];
-      edges[{std::min(a, b), std::max(a, b)}].push_back(g);
+      edges[soup_edge(a, b)].push_back(g);
     }
   for (const auto& edge : edges) {
     if (edge.second.size() != 2) continue;
@@ -361,9 +362,8 @@ inline std::vector<Epeck_triangle> exact_faces(const Triangle_soup& soup) {
 
 /// `out` as a closed mesh in `result`; an empty string, or why the outer surface cannot be
 /// used. `crossing` gets the intersecting pairs of faces, if any.
-inline std::string checked_outer_surface(
-    const Triangle_soup& out, Core_mesh& result,
-    std::vector<std::pair<Core_mesh::Face_index, Core_mesh::Face_index>>& crossing) {
+inline std::string checked_outer_surface(const Triangle_soup& out, Core_mesh& result,
+                                         Face_pairs& crossing) {
   result = Core_mesh();
   const std::string why = solid_union::to_closed_mesh(out, result);
   if (!why.empty()) return "its outer surface: " + why;
@@ -376,10 +376,9 @@ inline std::string checked_outer_surface(
 /// The next way into the fans of each touching point that a face of `crossing` has (`point_of`
 /// as `touching_fans::separate` gives it); false when one has none left, or when a crossing
 /// face has no touching point.
-inline bool next_ways(
-    const Core_mesh& result,
-    const std::vector<std::pair<Core_mesh::Face_index, Core_mesh::Face_index>>& crossing,
-    const std::vector<std::ptrdiff_t>& point_of, std::vector<touching_fans::Into_fan>& ways) {
+inline bool next_ways(const Core_mesh& result, const Face_pairs& crossing,
+                      const std::vector<std::ptrdiff_t>& point_of,
+                      std::vector<touching_fans::Into_fan>& ways) {
   std::set<std::size_t> involved;
   for (const auto& pair : crossing) {
     bool touches = false;
@@ -405,21 +404,10 @@ inline bool next_ways(
 inline bool mark_thin_components(const Core_mesh& result,
                                  const std::vector<std::ptrdiff_t>& point_of, double distance,
                                  std::vector<char>& by_height) {
-  std::vector<std::size_t> component(result.number_of_faces());
-  const std::size_t count = CGAL::Polygon_mesh_processing::connected_components(
-      result, CGAL::make_property_map(component));
-  std::vector<double> area(count), volume(count);
-  for (auto f : result.faces()) {
-    const auto h = result.halfedge(f);
-    const auto &a = result.point(result.source(h)), &b = result.point(result.target(h)),
-               &c = result.point(result.target(result.next(h)));
-    area[component[f]] += std::sqrt(CGAL::squared_area(a, b, c));
-    volume[component[f]] +=
-        CGAL::determinant(a - CGAL::ORIGIN, b - CGAL::ORIGIN, c - CGAL::ORIGIN) / 6;
-  }
+  const Thin_components thin(result, distance);
   bool marked = false;
   for (auto f : result.faces()) {
-    if (std::abs(volume[component[f]]) >= distance * area[component[f]]) continue;
+    if (!thin.is_thin(f)) continue;
     for (auto v : vertices_around_face(result.halfedge(f), result))
       if (point_of[v] >= 0 && !by_height[std::size_t(point_of[v])]) {
         by_height[std::size_t(point_of[v])] = 1;
@@ -429,14 +417,37 @@ inline bool mark_thin_components(const Core_mesh& result,
   return marked;
 }
 
+/// The outer surface `result` (soup `out`) whose faces cross (`crossing`) once rounded, with the
+/// thin components that cross dropped (`drop_thin_crossing_components`). An empty string when
+/// what is left is a closed valid mesh free of crossings, or whose crossings all lie within one
+/// component each, which region replacement can remove (counted in
+/// `measures.rounding_crossings`); else why not.
+inline std::string crossed_outer_surface(Core_mesh& result, Face_pairs crossing, double distance,
+                                         Triangle_soup& out, Solid_autorefinement& measures) {
+  const std::string folded = "its outer surface intersects itself once rounded to doubles";
+  measures.thin_solids_dropped = drop_thin_crossing_components(result, crossing, distance, out);
+  if (measures.thin_solids_dropped > 0) {
+    crossing.clear();
+    const std::string why = checked_outer_surface(out, result, crossing);
+    if (!why.empty() && crossing.empty()) return why;
+    if (crossing.empty() && !CGAL::Polygon_mesh_processing::does_bound_a_volume(result))
+      return "its outer surface bounds no volume";
+  }
+  if (crosses_between_components(result, crossing)) return folded;
+  measures.rounding_crossings = crossing.size();
+  return {};
+}
+
 /// `out`, whose surface touches itself at the points of `touching`, with those points split and
 /// moved apart by `distance` (`touching_fans::separate`), in `result`. Where a face crosses
 /// another, the next way into the fans of its touching points is tried; where a thin closed
 /// component keeps the surface from bounding a volume, its points move less
 /// (`mark_thin_components`). An empty string, or why no way gave a surface free of
-/// intersections that bounds a volume.
+/// intersections that bounds a volume. When no way is left and the faces still cross, the
+/// last surface goes to `crossed_outer_surface`.
 inline std::string separated_outer_surface(const touching_fans::Touching& touching, double distance,
-                                           Triangle_soup& out, Core_mesh& result) {
+                                           Triangle_soup& out, Core_mesh& result,
+                                           Solid_autorefinement& measures) {
   const Triangle_soup unseparated = out;
   std::vector<touching_fans::Into_fan> ways(touching.points.size(),
                                             touching_fans::Into_fan::wedge_or_away);
@@ -445,11 +456,11 @@ inline std::string separated_outer_surface(const touching_fans::Touching& touchi
     out = unseparated;
     std::vector<std::ptrdiff_t> point_of;
     touching_fans::separate(out, touching, ways, distance, by_height, point_of);
-    std::vector<std::pair<Core_mesh::Face_index, Core_mesh::Face_index>> crossing;
+    Face_pairs crossing;
     const std::string why = checked_outer_surface(out, result, crossing);
     if (!crossing.empty()) {
       retry = next_ways(result, crossing, point_of, ways);
-      if (!retry) return why;
+      if (!retry) return crossed_outer_surface(result, crossing, distance, out, measures);
     } else if (!why.empty()) {
       return why;
     } else if (!CGAL::Polygon_mesh_processing::does_bound_a_volume(result)) {
@@ -489,7 +500,7 @@ CGAL_MESH_REPAIR_CORE_INLINE std::string outer_surface_of_solid(const Triangle_s
   // another there.
   std::vector<char> flat(faces.size());
   for (std::size_t f = 0; f < faces.size(); ++f) flat[f] = faces[f].is_degenerate();
-  std::vector<std::pair<Core_mesh::Face_index, Core_mesh::Face_index>> pairs;
+  Face_pairs pairs;
   PMP::self_intersections(snapped, std::back_inserter(pairs));
   if (pairs.size() > limits.max_pairs) return "the part has too many intersecting face pairs";
 
@@ -581,8 +592,11 @@ CGAL_MESH_REPAIR_CORE_INLINE std::string outer_surface_of_solid(const Triangle_s
     return "its faces only touch one another";
   measures.touching_vertices_separated = touching.points.size();
   Core_mesh result;
-  why = separated_outer_surface(touching, 1024 * grid_spacing(mesh), out, result);
+  why = separated_outer_surface(touching, 1024 * grid_spacing(mesh), out, result, measures);
   if (!why.empty()) return why;
+  if (double(measures.rounding_crossings) >
+      limits.max_rounding_crossing_share * double(pairs.size()))
+    return "its outer surface intersects itself once rounded to doubles";
   measures.area_after = PMP::area(result);
   measures.largest_distance =
       PMP::max_distance_to_triangle_mesh<CGAL::Sequential_tag>(mesh.points(), result);

@@ -40,6 +40,12 @@ struct Solid_autorefinement {
   /// Vertices where the result touched itself, given a point of their own per fan of faces
   /// and moved apart (`separate_touching_fans`).
   std::size_t touching_vertices_separated = 0;
+  /// Pairs of faces of the result that cross once rounded to doubles, when the limits accept
+  /// some (`Self_union_limits::max_rounding_crossing_share`).
+  std::size_t rounding_crossings = 0;
+  /// Closed components of the result thinner than its separation distance (slivers between
+  /// faces that nearly meet) that crossed other faces once rounded, dropped.
+  std::size_t thin_solids_dropped = 0;
 };
 
 /// Writes into `out` the closed part `solid` (a closed triangle mesh that may intersect itself)
