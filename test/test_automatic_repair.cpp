@@ -1015,46 +1015,70 @@ TEST(AutomaticRepair, AZeroVolumeWallBetweenTwoShellsIsRemovedAndTheShellsJoined
       << (result.remaining.empty() ? "" : result.remaining.front());
 }
 
-// Two cubes touching at one corner: the corner stays split (merging it would make a
-// non-manifold vertex); `manifold` says what a merging reader sees. The contact is between two
-// parts, each a solid of its own: kept, like intersections between parts.
-TEST(AutomaticRepair, ShellsTouchingAtACornerAreKeptSplitAndReportedNonManifold) {
+/// The coincident-elements step's count named `name`, or -1.
+double coincident_step_count(const MR::Repair_result& result, const std::string& name) {
+  const auto* step = find_step(result, "coincident elements");
+  return step == nullptr ? -1 : step->count(name);
+}
+
+/// The smallest distance between two distinct vertices of `mesh`.
+double closest_vertices(const Mesh& mesh) {
+  double closest = std::numeric_limits<double>::infinity();
+  for (auto v : mesh.vertices())
+    for (auto w : mesh.vertices())
+      if (v < w)
+        closest =
+            std::min(closest, std::sqrt(CGAL::squared_distance(mesh.point(v), mesh.point(w))));
+  return closest;
+}
+
+// Two cubes touching at one corner: merging the corner would make a non-manifold vertex, and a
+// file would show the two corners as one point. Each corner is moved about 1e-6 of the diagonal
+// into its own cube: two solids apart, which a merging reader sees as they are.
+TEST(AutomaticRepair, ShellsTouchingAtACornerAreMovedApart) {
   Mesh mesh = cubes_sharing_a_face();
   for (auto v : mesh.vertices())
     if (v.idx() >= 8) mesh.point(v) = mesh.point(v) + Kernel::Vector_3(1, 1, 0);
+  ASSERT_EQ(MR::counts(MR::detect_defects(mesh)).non_manifold_vertices, 1u);
   const auto result = MR::automatic_repair(mesh);
   EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
   EXPECT_TRUE(CGAL::is_closed(mesh));
-  EXPECT_FALSE(result.manifold);
-  EXPECT_EQ(result.non_manifold_vertices_left, 1u);
-  EXPECT_EQ(result.coincident_vertices_left, 1u);
-  EXPECT_TRUE(result.non_manifold_only_between_components);
-  EXPECT_EQ(result.status(), MR::Repair_status::complete_except_kept)
+  EXPECT_EQ(support::connected_components(mesh), 2u);
+  EXPECT_TRUE(result.manifold);
+  EXPECT_EQ(result.non_manifold_vertices_left, 0u);
+  EXPECT_EQ(result.coincident_vertices_left, 0u);
+  EXPECT_EQ(coincident_step_count(result, "contact_vertices_moved_apart"), 2.0);
+  EXPECT_EQ(coincident_step_count(result, "contact_moves_undone"), 0.0);
+  EXPECT_FALSE(support::does_self_intersect(mesh));
+  EXPECT_EQ(result.status(), MR::Repair_status::complete)
       << (result.remaining.empty() ? "" : result.remaining.front());
-  // The contact, and the face pairs that touch at the corner (CGAL's test counts a shared point).
-  ASSERT_EQ(result.kept.size(), 2u);
-  EXPECT_NE(result.kept[0].find("where separate components touch"), std::string::npos);
-  EXPECT_NE(result.kept[1].find("between separate components"), std::string::npos);
-  // One definition: detect_defects sees the same non-manifold vertex.
-  EXPECT_EQ(MR::counts(MR::detect_defects(mesh)).non_manifold_vertices, 1u);
+  // Apart by about twice the move (1e-6 of the diagonal, 3), and by no more.
+  const double gap = closest_vertices(mesh);
+  EXPECT_GT(gap, 1e-6);
+  EXPECT_LT(gap, 1e-5);
+  EXPECT_NEAR(CGAL::Polygon_mesh_processing::volume(mesh), 2.0, 1e-5);
+  // One definition: detect_defects sees no non-manifold vertex either.
+  EXPECT_EQ(MR::counts(MR::detect_defects(mesh)).non_manifold_vertices, 0u);
 }
 
 // A chain of seven cubes bent round so that its two ends touch along an edge: the walls between
-// the cubes go, the chain is one solid, and its contact with itself is no contact between parts:
-// the repair is incomplete.
-TEST(AutomaticRepair, ASolidTouchingItselfAlongAnEdgeIsIncomplete) {
+// the cubes go, the chain is one solid, and the two copies of the edge where it touches itself
+// are moved apart, each into its own end: one closed solid, manifold as a reader sees it.
+TEST(AutomaticRepair, ASolidTouchingItselfAlongAnEdgeIsMovedApartThere) {
   Mesh mesh =
       cubes_at({{0, 1, 0}, {0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {2, 1, 0}, {2, 2, 0}, {1, 2, 0}});
   const auto result = MR::automatic_repair(mesh);
   EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
   EXPECT_TRUE(CGAL::is_closed(mesh));
   EXPECT_EQ(support::connected_components(mesh), 1u);
-  EXPECT_FALSE(result.manifold);
-  EXPECT_EQ(result.non_manifold_edges_left, 1u);
-  EXPECT_FALSE(result.non_manifold_only_between_components);
-  EXPECT_EQ(result.status(), MR::Repair_status::incomplete);
-  ASSERT_FALSE(result.remaining.empty());
-  EXPECT_NE(result.remaining[0].find("where sheets of the surface touch"), std::string::npos);
+  EXPECT_TRUE(result.manifold);
+  EXPECT_EQ(result.non_manifold_edges_left, 0u);
+  EXPECT_EQ(coincident_step_count(result, "contact_vertices_moved_apart"), 4.0);
+  EXPECT_FALSE(support::does_self_intersect(mesh));
+  EXPECT_NEAR(CGAL::Polygon_mesh_processing::volume(mesh), 7.0, 1e-5);
+  EXPECT_EQ(result.status(), MR::Repair_status::complete)
+      << (result.remaining.empty() ? "" : result.remaining.front());
+  EXPECT_EQ(MR::counts(MR::detect_defects(mesh)).non_manifold_edges, 0u);
 }
 
 TEST(FillHoles, APatchMeetingAnotherPartOfTheMeshIsRolledBack) {

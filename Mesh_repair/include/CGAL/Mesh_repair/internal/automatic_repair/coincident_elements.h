@@ -19,6 +19,7 @@
 // Then the lines of `remaining` are listed again from the updated figures and what was left on
 // purpose moves to `kept`.
 
+#include <CGAL/Mesh_repair/internal/automatic_repair/contact_separation.h>
 #include <CGAL/Mesh_repair/internal/automatic_repair/repair_steps.h>
 #include <CGAL/Mesh_repair/internal/detect_defects/coincident_elements.h>
 
@@ -57,8 +58,14 @@ struct Coincidence_census {
   /// Positions of several vertices whose faces, merged, would form one fan (stitching could not
   /// join them: faces glued the wrong way round); the mesh is then rebuilt as a reader builds it.
   std::size_t mergeable_positions = 0;
-  std::size_t rebuilt = 0;  ///< 1 when the mesh was rebuilt from its soup
+  std::size_t rebuilt = 0;      ///< 1 when the mesh was rebuilt from its soup
+  Contact_separation contacts;  ///< the vertices at shared positions moved apart
 };
+
+/// Vertices at one position (contacts) are moved apart by this fraction of the bounding-box
+/// diagonal (contact_separation.h): far below any tolerance of the repair, far above the
+/// rounding of a coordinate written with 17 digits.
+constexpr double contact_separation_fraction = 1e-6;
 
 template <class PolygonMesh, class VertexPointMap, class GeomTraits>
 class Coincident_elements {
@@ -338,13 +345,22 @@ void step_coincident_elements(PolygonMesh& pm, VertexPointMap vpm, const GeomTra
     changed = true;
     Coincident_elements<PolygonMesh, VertexPointMap, GeomTraits>(pm, vpm, traits).count(census);
   }
-  verify_again(pm, options, census, result, changed);
   // Merging coincident points may join an open hole's border to another (two sheets whose
-  // outlines coincide): the hole records must say what the written mesh shows.
+  // outlines coincide): the hole records must say what the written mesh shows. Before the
+  // contacts move: the records hold the borders' positions.
   if (changed)
     reconcile_open_holes(pm, vpm, hole_points,
                          "merging coincident points joined its border to another one", timer,
                          result);
+  if (census.coincident_vertices > 0) {
+    census.contacts = separate_contacts(pm, vpm, traits,
+                                        contact_separation_fraction * mesh_bbox_diagonal(pm, vpm));
+    if (census.contacts.vertices_moved > 0) {
+      changed = true;
+      Coincident_elements<PolygonMesh, VertexPointMap, GeomTraits>(pm, vpm, traits).count(census);
+    }
+  }
+  verify_again(pm, options, census, result, changed);
   timer.count("duplicated_faces_removed", double(census.duplicated_faces_removed));
   timer.count("zero_volume_groups_removed", double(census.zero_volume_groups_removed));
   timer.count("isolated_vertices_removed", double(census.isolated_vertices_removed));
@@ -352,6 +368,12 @@ void step_coincident_elements(PolygonMesh& pm, VertexPointMap vpm, const GeomTra
   timer.count("pinched_vertices_split", double(census.pinched_vertices_split));
   timer.count("non_manifold_vertices_kept", double(census.non_manifold_vertices));
   timer.count("non_manifold_edges_kept", double(census.non_manifold_edges));
+  if (census.contacts.vertices_moved + census.contacts.moves_undone > 0) {
+    timer.count("contact_vertices_moved_apart", double(census.contacts.vertices_moved));
+    timer.count("contact_moves_undone", double(census.contacts.moves_undone));
+  }
+  if (census.contacts.skipped)
+    timer.step().notes.push_back("contacts not moved apart: too many intersecting pairs to check");
   timer.count("coincident_vertices_kept", double(census.coincident_vertices));
   timer.count("duplicated_faces_left", double(census.duplicated_faces_left));
   timer.count("rebuilt_as_read", double(census.rebuilt));
