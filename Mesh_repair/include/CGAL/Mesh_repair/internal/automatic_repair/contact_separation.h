@@ -57,7 +57,7 @@ class Contact_separator {
   Contact_separation separate(double distance) {
     Contact_separation report;
     const std::vector<vertex_descriptor> shared = vertices_at_shared_positions();
-    if (shared.empty() || !(distance > 0)) return report;
+    if (shared.empty() || !(distance > 0) || !std::isfinite(distance)) return report;
     const std::vector<face_descriptor> moved_faces = faces_around(shared);
     const auto before = meeting_pairs(moved_faces);
     if (before.truncated) {
@@ -71,8 +71,12 @@ class Contact_separator {
       const Point p = get(vpm_, v);
       const Vector direction = into_own_fan(v);
       if (direction == CGAL::NULL_VECTOR) continue;
+      const Point moved = p + direction * distance;
+      if (!std::isfinite(CGAL::to_double(moved.x())) ||
+          !std::isfinite(CGAL::to_double(moved.y())) || !std::isfinite(CGAL::to_double(moved.z())))
+        continue;
       old.emplace(v, p);
-      put(vpm_, v, p + direction * distance);
+      put(vpm_, v, moved);
     }
     for (int round = 0; round < max_rounds && !old.empty(); ++round)
       if (undo_new_contacts(moved_faces, met, old, report) == 0) return finish(old, report);
@@ -135,7 +139,7 @@ class Contact_separator {
     }
     const Vector direction = towards.squared_length() > 0 ? towards : -normal;
     const double length = std::sqrt(CGAL::to_double(direction.squared_length()));
-    return length > 0 ? direction / length : CGAL::NULL_VECTOR;
+    return length > 0 && std::isfinite(length) ? direction / length : CGAL::NULL_VECTOR;
   }
 
   /// Undoes the moves of the vertices of faces that meet a face they did not meet; returns how
