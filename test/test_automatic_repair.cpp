@@ -1137,6 +1137,29 @@ TEST(AutomaticRepair, RealScansWithHolesBecomeClosed) {
   }
 }
 
+// A building reconstructed on its patch of terrain (libcgal-demo's polygon_mesh.off): the
+// ground's 432-edge outline is jagged and the terrain dips below it, so every spanning patch
+// crosses the ground; the outline is closed by a flat base below the lowest point.
+TEST(AutomaticRepair, TheOutlineOfAReconstructedBuildingsGroundIsClosedByABase) {
+  Mesh mesh;
+  if (!read_demo_mesh("polygon_mesh.off", mesh)) GTEST_SKIP() << "libcgal-demo meshes absent";
+  double lowest = std::numeric_limits<double>::infinity();
+  for (auto v : mesh.vertices()) lowest = std::min(lowest, mesh.point(v).z());
+  const auto result = MR::automatic_repair(mesh);
+  EXPECT_TRUE(result.complete()) << (result.remaining.empty() ? "" : result.remaining.front());
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  EXPECT_TRUE(CGAL::is_closed(mesh));
+  EXPECT_EQ(result.self_intersections_output, 0u);
+  EXPECT_FALSE(support::does_self_intersect(mesh));
+  std::size_t bases = 0;
+  for (const auto& hole : result.holes.holes)
+    for (const std::string& note : hole.notes) bases += note.rfind("filled by base", 0) == 0;
+  EXPECT_EQ(bases, 1u);
+  double base = std::numeric_limits<double>::infinity();
+  for (auto v : mesh.vertices()) base = std::min(base, mesh.point(v).z());
+  EXPECT_LT(base, lowest);
+}
+
 // A scanned figure whose surface passes through itself in many places (1,643 intersecting pairs
 // in one component): the intersecting faces are removed with up to 6 rings and refilled until
 // none is left; the repair keeps the surface (area not reduced).

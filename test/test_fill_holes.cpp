@@ -8,6 +8,7 @@
 #include <CGAL/Mesh_repair/hole_filling/advancing_front.h>
 #include <CGAL/Mesh_repair/io.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Surface_mesh.h>
 #include <gtest/gtest.h>
 
@@ -20,6 +21,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <set>
 #include <sstream>
 
@@ -608,11 +610,12 @@ TEST(FillHoles, AutomaticRecordsTheFallbackWhenTheFrontFails) {
                                 .sheet_border_ratio(std::numeric_limits<double>::infinity()));
   ASSERT_EQ(result.holes.size(), 1u);
   EXPECT_EQ(result.holes[0].requested, MR::Fill_method::automatic);
-  // The sheet's outline cannot be filled without covering the sheet: the front, Liepa and the
-  // last resorts (Liepa C0, refined, triangulated only) are all rejected and listed.
-  EXPECT_EQ(result.holes[0].fallbacks.size(), 5u);
-  EXPECT_FALSE(result.holes[0].filled);
-  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(sheet));
+  // No patch spans the sheet's outline without covering the sheet: the front, Liepa and the
+  // last resorts (Liepa C0, refined, triangulated only, the same three on the projected
+  // triangulation) are all rejected and listed; the base closes the sheet into a slab.
+  EXPECT_EQ(result.holes[0].fallbacks.size(), 8u);
+  EXPECT_TRUE(result.holes[0].filled);
+  EXPECT_TRUE(closed_valid_and_clean(sheet));
 }
 
 TEST(FillHoles, DefaultIsSelfValidatedAndListsEveryRejectedCandidate) {
@@ -623,16 +626,18 @@ TEST(FillHoles, DefaultIsSelfValidatedAndListsEveryRejectedCandidate) {
   ASSERT_EQ(result.holes.size(), 1u);
   EXPECT_EQ(result.holes[0].requested, MR::Fill_method::self_validated);
   // The four faired candidates in their validated order, the front (handing on, then closing
-  // its remnant), then the last resorts: the membrane, refined only, triangulated only.
+  // its remnant), then the last resorts: the membrane, refined only, triangulated only, the same
+  // on the projected triangulation, then the base, which closes the sheet into a slab.
   const auto& fallbacks = result.holes[0].fallbacks;
-  ASSERT_EQ(fallbacks.size(), 9u);
+  ASSERT_EQ(fallbacks.size(), 12u);
   EXPECT_EQ(fallbacks[4].rfind("advancing_front (0", 0), 0u) << fallbacks[4];
   EXPECT_EQ(fallbacks[5].rfind("advancing_front (remnant closed) (", 0), 0u) << fallbacks[5];
   EXPECT_EQ(fallbacks[6].rfind("liepa (C0) (", 0), 0u) << fallbacks[6];
   EXPECT_EQ(fallbacks[7].rfind("liepa (refined, not faired) (", 0), 0u) << fallbacks[7];
   EXPECT_EQ(fallbacks[8].rfind("liepa (triangulated only) (", 0), 0u) << fallbacks[8];
-  EXPECT_FALSE(result.holes[0].filled);
-  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(sheet));
+  EXPECT_EQ(fallbacks[11].rfind("projected triangulation (", 0), 0u) << fallbacks[11];
+  EXPECT_TRUE(result.holes[0].filled);
+  EXPECT_TRUE(closed_valid_and_clean(sheet));
 }
 
 TEST(FillHoles, ShapePredictionFallsBackToLiepaThenTheFrontAndTimesEachAttempt) {
@@ -643,21 +648,26 @@ TEST(FillHoles, ShapePredictionFallsBackToLiepaThenTheFrontAndTimesEachAttempt) 
                                 .sheet_border_ratio(std::numeric_limits<double>::infinity()));
   ASSERT_EQ(result.holes.size(), 1u);
   const auto& fallbacks = result.holes[0].fallbacks;
-  // Every method is rejected (see above), in the order of `shape_prediction_sequence`, each
-  // listed with the time it took.
-  ASSERT_EQ(fallbacks.size(), 6u);
+  // Every patch spanning the outline lies on the sheet (see above): each method is rejected, in
+  // the order of `shape_prediction_sequence`, then the last resorts, each listed with the time
+  // it took. The base closes the outline last: the sheet becomes a slab one border edge thick.
   const char* order[] = {"shape_prediction (",
                          "liepa (",
                          "advancing_front (",
                          "liepa (C0) (",
                          "liepa (refined, not faired) (",
-                         "liepa (triangulated only) ("};
-  for (std::size_t k = 0; k < 6; ++k) {
+                         "liepa (triangulated only) (",
+                         "projected triangulation, refined and faired (C0) (",
+                         "projected triangulation, refined (",
+                         "projected triangulation ("};
+  ASSERT_EQ(fallbacks.size(), std::size(order));
+  for (std::size_t k = 0; k < std::size(order); ++k) {
     EXPECT_EQ(fallbacks[k].rfind(order[k], 0), 0u) << fallbacks[k];
     EXPECT_NE(fallbacks[k].find(" s): "), std::string::npos) << fallbacks[k];
   }
-  EXPECT_FALSE(result.holes[0].filled);
-  EXPECT_EQ(count_border_cycles(sheet), 1u);
+  EXPECT_TRUE(result.holes[0].filled);
+  EXPECT_TRUE(closed_valid_and_clean(sheet));
+  EXPECT_NEAR(std::abs(CGAL::Polygon_mesh_processing::volume(sheet)), 1.0 / 6, 1e-9);
   EXPECT_TRUE(CGAL::is_valid_polygon_mesh(sheet));
 }
 
@@ -860,6 +870,62 @@ TEST(FillHoles, AMissingPlanarFaceOfABoxIsFilledFlat) {
   ASSERT_EQ(validated.filled, 1u);
   EXPECT_TRUE(note_starts_with(validated.holes[0], "self-validation"));
   EXPECT_GT(CGAL::Polygon_mesh_processing::volume(bent), 8.1);
+}
+
+/// A courtyard building on flat ground, as a height field over [-1,1]^2 (n x n cells): ground at
+/// 0 out to the outline, a roof ring at 0.6, a courtyard sunk to -0.3; the outline jagged by up
+/// to 0.01. Like a reconstructed building on its patch of terrain, the surface lies on both sides
+/// of the outline's plane and runs along it: any surface spanning the outline crosses it.
+Mesh courtyard_on_ground(int n) {
+  Mesh mesh;
+  MR::make_height_field<Mesh, Point>(mesh, -1, 1, -1, 1, n, n, [](double x, double y) {
+    const double r = std::max(std::abs(x), std::abs(y));
+    if (r > 0.999) return 0.01 * std::sin(23 * x + 17 * y);
+    return r > 0.8 ? 0.0 : r > 0.5 ? 0.6 : -0.3;
+  });
+  return mesh;
+}
+
+// Every spanning patch, faired, Liepa's or projected, meets the ground or the courtyard; the
+// outline is extruded straight down to a flat base below the courtyard and closed there.
+TEST(FillHoles, AnOutlineTheSurfaceDipsBelowIsClosedByABase) {
+  Mesh mesh = courtyard_on_ground(40);
+  ASSERT_EQ(count_border_cycles(mesh), 1u);
+  double lowest = 0;
+  for (auto v : mesh.vertices()) lowest = std::min(lowest, mesh.point(v).z());
+  const MR::Fill_result result = MR::fill_holes(mesh);
+  ASSERT_EQ(result.holes.size(), 1u);
+  const MR::Hole_fill_report& hole = result.holes[0];
+  ASSERT_TRUE(hole.filled) << hole.failure;
+  EXPECT_EQ(hole.notes.back(),
+            "filled by base: the patches of the methods before it were rejected");
+  EXPECT_TRUE(closed_valid_and_clean(mesh));
+  EXPECT_TRUE(CGAL::Polygon_mesh_processing::does_bound_a_volume(mesh));
+  // The base lies one mean border edge (0.05) below the courtyard, walls straight down.
+  double base = 0;
+  for (auto v : mesh.vertices()) base = std::min(base, mesh.point(v).z());
+  EXPECT_LT(base, lowest - 0.04);
+  EXPECT_GT(base, lowest - 0.07);
+}
+
+// The projected triangulation of a flat outline: no new vertex, n - 2 triangles in the plane, and
+// the mesh closed (the triangles lie on the sheet's own faces: that is for the caller's check).
+TEST(FillHoles, ProjectedTriangulationOfAnOutlineAddsOnlyTheBorderTriangles) {
+  Mesh mesh;
+  MR::make_height_field<Mesh, Point>(mesh, 0, 2, 0, 1, 8, 4, [](double, double) { return 0.0; });
+  const std::vector<Mesh::Halfedge_index> borders = support::boundary_cycles(mesh);
+  ASSERT_EQ(borders.size(), 1u);
+  const std::size_t n = CGAL::halfedges_around_face(borders[0], mesh).size();
+  std::vector<face_descriptor> faces;
+  EXPECT_EQ(
+      MR::internal::triangulate_projected_border(mesh, mesh.points(), Kernel(), borders[0], faces),
+      "");
+  EXPECT_EQ(faces.size(), n - 2);
+  EXPECT_TRUE(CGAL::is_closed(mesh));
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  for (face_descriptor f : faces)
+    for (auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+      EXPECT_EQ(mesh.point(v).z(), 0.0);
 }
 
 // The reach of a patch: a pyramid over the square border (+-1, +-1, 0), its apex the one new

@@ -306,27 +306,47 @@ class Hole_filler {
   /// hull of its border (maximum principle), so it cannot bulge into a facing patch or a nearby
   /// sheet the way the C1/C2 patches can. When its fairing, then its refinement, folds the
   /// patch (large or saddle-shaped borders: a 1,000-edge circle, a bowl's rim), CGAL's
-  /// triangulation of the border alone closes the hole with the border's vertices only.
+  /// triangulation of the border alone closes the hole with the border's vertices only. Where
+  /// Liepa's triangulation itself crosses over the folds of a jagged, nearly flat border (a
+  /// scan's cut-off side), the same three stages start from the border's projected
+  /// triangulation. Where the surface dips below its outline, the outline is extruded to a flat
+  /// base (projected_triangulation.h), not refined: CGAL's refinement flips the edges between
+  /// the walls and the base, folding them into the mesh.
   template <class Rejected>
   Hole_fill_report last_resorts(const Group& group, Patch& patch, Rejected& rejected) {
-    const std::pair<Liepa_stage, const char*> stages[] = {
-        {Liepa_stage::fair, "liepa (C0)"},
-        {Liepa_stage::refine, "liepa (refined, not faired)"},
-        {Liepa_stage::triangulate, "liepa (triangulated only)"}};
-    Hole_fill_report report;
-    for (const auto& [stage, name] : stages) {
+    using T = Hole_triangulation;
+    struct Stage {
+      Liepa_stage stage;
+      Hole_triangulation triangulation;
+      const char* name;
+    };
+    const Stage stages[] = {
+        {Liepa_stage::fair, T::minimum_weight, "liepa (C0)"},
+        {Liepa_stage::refine, T::minimum_weight, "liepa (refined, not faired)"},
+        {Liepa_stage::triangulate, T::minimum_weight, "liepa (triangulated only)"},
+        {Liepa_stage::fair, T::projected, "projected triangulation, refined and faired (C0)"},
+        {Liepa_stage::refine, T::projected, "projected triangulation, refined"},
+        {Liepa_stage::triangulate, T::projected, "projected triangulation"},
+        {Liepa_stage::triangulate, T::projected_base, "base"}};
+    Hole_fill_report report, shown;
+    for (const Stage& stage : stages) {
+      // A base reaches past the mesh; through another part it would join the two.
+      if (stage.triangulation == T::projected_base && !options_.other_parts_are_obstacles) continue;
       const auto attempt_start = Clock::now();
       Fill_options options = Fill_candidate{Fill_method::liepa, 0}.options(options_);
-      options.liepa.last_stage = stage;
+      options.liepa.last_stage = stage.stage;
+      options.liepa.triangulation = stage.triangulation;
       report = attempt(group, Fill_method::liepa, patch, options);
       if (report.filled) {
-        report.notes.push_back(std::string("filled by ") + name +
+        report.notes.push_back(std::string("filled by ") + stage.name +
                                ": the patches of the methods before it were rejected");
         return report;
       }
-      rejected(name, report, attempt_start);
+      rejected(stage.name, report, attempt_start);
+      // The failure shown is Liepa's; the projected ones are in the fallbacks.
+      if (stage.triangulation == T::minimum_weight) shown = report;
     }
-    return report;
+    return shown;
   }
 
   /// Takes the faces of the mesh as the obstacles of every hole (before the first patch).

@@ -47,10 +47,19 @@ struct Advancing_front_options {
 /// refinement, folds the patch onto itself where the triangulation alone does not.
 enum class Liepa_stage { triangulate, refine, fair };
 
+/// The first triangulation of `fill_hole_liepa`: Liepa's minimum-weight triangulation of the
+/// border polygon (CGAL), the constrained Delaunay triangulation of the border projected along
+/// its normal where that projection is a simple polygon, or the same after the border is
+/// extruded along its normal to a flat base beyond its part of the mesh. The projected ones are
+/// last resorts for the jagged, nearly flat outlines of scans (projected_triangulation.h).
+enum class Hole_triangulation { minimum_weight, projected, projected_base };
+
 /// Options of `fill_hole_liepa` (CGAL's `triangulate_refine_and_fair_hole`).
 struct Liepa_options {
   unsigned int fairing_continuity = 1;  ///< 0 (membrane), 1 (thin plate) or 2
   Liepa_stage last_stage = Liepa_stage::fair;
+  /// The first triangulation, before the refinement and the fairing.
+  Hole_triangulation triangulation = Hole_triangulation::minimum_weight;
 };
 
 /// Options of `fill_hole_shape_prediction` (thesis chapter 5).

@@ -12,6 +12,7 @@
 #include <CGAL/Mesh_repair/hole_filling/fill_options.h>
 #include <CGAL/Mesh_repair/hole_filling/fill_result.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/cubic_search_limit.h>
+#include <CGAL/Mesh_repair/internal/hole_filling/projected_triangulation.h>
 #include <CGAL/Mesh_repair/parameters.h>
 
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
@@ -25,6 +26,24 @@ namespace CGAL {
 namespace Mesh_repair {
 
 namespace internal {
+
+/// CGAL's stages of Liepa's method up to `last_stage`; `faired` false when the fairing failed.
+template <class PolygonMesh, class NamedParameters>
+void triangulate_liepa(PolygonMesh& pm,
+                       typename boost::graph_traits<PolygonMesh>::halfedge_descriptor border,
+                       Fill_patch<PolygonMesh>& patch, Liepa_stage last_stage,
+                       const NamedParameters& np, bool& faired) {
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  if (last_stage == Liepa_stage::triangulate) {
+    PMP::triangulate_hole(pm, border, std::back_inserter(patch.faces), np);
+  } else if (last_stage == Liepa_stage::refine) {
+    PMP::triangulate_and_refine_hole(pm, border, std::back_inserter(patch.faces),
+                                     std::back_inserter(patch.vertices), np);
+  } else {
+    faired = std::get<0>(PMP::triangulate_refine_and_fair_hole(
+        pm, border, std::back_inserter(patch.faces), std::back_inserter(patch.vertices), np));
+  }
+}
 
 /// `fill_hole_liepa` on plain options; `vpm` and `traits` as read by the public function.
 template <class PolygonMesh, class VertexPointMap, class GeomTraits>
@@ -57,21 +76,30 @@ Hole_fill_report fill_hole_liepa(
                       .do_not_use_cubic_algorithm(bounded)
                       .visitor(limit);
   bool faired = true;
-  try {
-    if (options.last_stage == Liepa_stage::triangulate) {
-      PMP::triangulate_hole(pm, border_halfedge, std::back_inserter(patch.faces), np);
-    } else if (options.last_stage == Liepa_stage::refine) {
-      PMP::triangulate_and_refine_hole(pm, border_halfedge, std::back_inserter(patch.faces),
-                                       std::back_inserter(patch.vertices), np);
-    } else {
-      faired = std::get<0>(PMP::triangulate_refine_and_fair_hole(
-          pm, border_halfedge, std::back_inserter(patch.faces), std::back_inserter(patch.vertices),
-          np));
+  if (options.triangulation != Hole_triangulation::minimum_weight) {
+    report.failure =
+        options.triangulation == Hole_triangulation::projected
+            ? triangulate_projected_border(pm, vpm, traits, border_halfedge, patch.faces)
+            : extrude_border_to_base(pm, vpm, traits, border_halfedge, patch.faces, patch.vertices);
+    if (!report.failure.empty()) return report;
+    // Only the refinement's vertices are faired: the base's ring stays in its plane.
+    std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor> refined;
+    if (options.last_stage != Liepa_stage::triangulate) {
+      const std::vector<typename boost::graph_traits<PolygonMesh>::face_descriptor> triangles =
+          patch.faces;
+      PMP::refine(pm, triangles, std::back_inserter(patch.faces), std::back_inserter(refined), np);
     }
-  } catch (const Cubic_search_too_large&) {
-    report.failure = "CGAL's triangulation needs an exhaustive search over more than " +
-                     std::to_string(max_cubic_search_edges) + " border vertices (O(n^3)); not run";
-    return report;
+    if (options.last_stage == Liepa_stage::fair) faired = PMP::fair(pm, refined, np);
+    patch.vertices.insert(patch.vertices.end(), refined.begin(), refined.end());
+  } else {
+    try {
+      triangulate_liepa(pm, border_halfedge, patch, options.last_stage, np, faired);
+    } catch (const Cubic_search_too_large&) {
+      report.failure = "CGAL's triangulation needs an exhaustive search over more than " +
+                       std::to_string(max_cubic_search_edges) +
+                       " border vertices (O(n^3)); not run";
+      return report;
+    }
   }
   report.faces_created = patch.faces.size();
   report.vertices_created = patch.vertices.size();
