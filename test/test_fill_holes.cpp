@@ -908,6 +908,31 @@ TEST(FillHoles, AnOutlineTheSurfaceDipsBelowIsClosedByABase) {
   EXPECT_GT(base, lowest - 0.07);
 }
 
+// Liepa's method alone leaves the courtyard's outline open (its patches cross the ground);
+// with `then_last_resorts`, as automatic_repair fills its grown holes, the base closes it and the
+// report lists the rejected Liepa patch first.
+TEST(FillHoles, LiepaThenLastResortsClosesWhatLiepaAloneLeavesOpen) {
+  for (const bool last_resorts : {false, true}) {
+    Mesh mesh = courtyard_on_ground(40);
+    MR::Fill_options options;
+    options.method = MR::Fill_method::liepa;
+    options.liepa.then_last_resorts = last_resorts;
+    std::vector<MR::Fill_patch<Mesh>> patches;
+    MR::Default_visitor quiet;
+    const MR::Fill_result result = MR::internal::fill_holes_with_options(
+        mesh, mesh.points(), Kernel(), options, MR::Any_visitor(quiet), patches);
+    ASSERT_EQ(result.holes.size(), 1u);
+    const MR::Hole_fill_report& hole = result.holes[0];
+    EXPECT_EQ(hole.filled, last_resorts) << hole.failure;
+    EXPECT_EQ(closed_valid_and_clean(mesh), last_resorts);
+    if (!last_resorts) continue;
+    ASSERT_FALSE(hole.fallbacks.empty());
+    EXPECT_EQ(hole.fallbacks.front().rfind("liepa_c1 (", 0), 0u) << hole.fallbacks.front();
+    EXPECT_EQ(hole.notes.back(),
+              "filled by base: the patches of the methods before it were rejected");
+  }
+}
+
 // The projected triangulation of a flat outline: no new vertex, n - 2 triangles in the plane, and
 // the mesh closed (the triangles lie on the sheet's own faces: that is for the caller's check).
 TEST(FillHoles, ProjectedTriangulationOfAnOutlineAddsOnlyTheBorderTriangles) {

@@ -269,17 +269,25 @@ class Hole_filler {
     if (check_) near_faces_.build();
     const Border_cycle_geometry outer = cycle_geometry(group.outer, pm_, vpm_);
     Hole_fill_report report;
-    if (method != Fill_method::automatic && method != Fill_method::shape_prediction &&
-        method != Fill_method::self_validated) {
+    std::vector<std::string> fallbacks, notes;
+    // Each rejected attempt is listed with its time: on a hard hole the fill's time is the sum.
+    auto rejected = [&fallbacks](const std::string& name, const Hole_fill_report& failed,
+                                 Clock::time_point since) {
+      fallbacks.push_back(name + " (" + seconds_text(Clock::now() - since) +
+                          "): " + failed.failure);
+    };
+    if (method == Fill_method::liepa && options_.liepa.then_last_resorts) {
+      report = attempt(group, method, patch);
+      if (!report.filled) {
+        rejected(Fill_candidate{method, int(options_.liepa.fairing_continuity)}.name(), report,
+                 start_time);
+        report = last_resorts(group, patch, rejected);
+        report.fallbacks = fallbacks;
+      }
+    } else if (method != Fill_method::automatic && method != Fill_method::shape_prediction &&
+               method != Fill_method::self_validated) {
       report = attempt(group, method, patch);
     } else {
-      std::vector<std::string> fallbacks, notes;
-      // Each rejected attempt is listed with its time: on a hard hole the fill's time is the sum.
-      auto rejected = [&fallbacks](const std::string& name, const Hole_fill_report& failed,
-                                   Clock::time_point since) {
-        fallbacks.push_back(name + " (" + seconds_text(Clock::now() - since) +
-                            "): " + failed.failure);
-      };
       for (const Fill_candidate& candidate : sequence(group, method, notes)) {
         const auto attempt_start = Clock::now();
         // In a sequence, a stuck front hands over to the next method: the remnant closing

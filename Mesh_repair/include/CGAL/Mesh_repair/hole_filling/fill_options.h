@@ -60,6 +60,10 @@ struct Liepa_options {
   Liepa_stage last_stage = Liepa_stage::fair;
   /// The first triangulation, before the refinement and the fairing.
   Hole_triangulation triangulation = Hole_triangulation::minimum_weight;
+  /// When the patch is rejected, the last resorts of the automatic sequences follow (C0,
+  /// refined only, triangulated only, the projected triangulation, a base): automatic_repair's
+  /// grown holes, whose patches must also stay near the faces they replace.
+  bool then_last_resorts = false;
 };
 
 /// Options of `fill_hole_shape_prediction` (thesis chapter 5).

@@ -29,7 +29,10 @@
 #include <limits>
 #include <memory>
 #include <map>
+#include <iomanip>
 #include <numeric>
+#include <sstream>
+#include <string>
 #include <unordered_map>
 #include <unordered_set>
 #include <vector>
@@ -55,6 +58,8 @@ struct Region_replacement_report {
   std::vector<std::size_t> region_faces_added, region_vertices_added, region_faces_removed,
       regions_merged;
   std::vector<Fill_method> region_method;  ///< the method of the first patch of each region's holes
+  /// Per region given: empty when replaced, else why its faces were left or put back.
+  std::vector<std::string> region_failure;
 };
 
 /// The connected component (by edges) of every face.
@@ -158,10 +163,14 @@ class Region_replacer {
     for (std::size_t u = 0; u < units; ++u) {
       removed[u].faces = std::move(unit_faces[u]);
       removed[u].skipped = pinches(removed[u].faces) > 0;
+      if (removed[u].skipped) removed[u].failure = "its removal would pinch a vertex";
       if (!removed[u].skipped) record(removed[u]);
       // A region with no kept face along it is a whole component: removing it opens no hole
       // and would lose it.
-      if (removed[u].rim.empty()) removed[u].skipped = true;
+      if (removed[u].rim.empty() && !removed[u].skipped) {
+        removed[u].skipped = true;
+        removed[u].failure = "it is a whole part";
+      }
     }
     if (max_part_share < 1) skip_large_shares_of_parts(removed, report);
     // The opposite of every rim halfedge is a border halfedge of the unit's holes once the
@@ -212,10 +221,19 @@ class Region_replacer {
     // A tie succeeds when it opened holes and every one of them was filled (and, with a
     // deviation bound, its patches stay near the faces it removed).
     std::vector<bool> tie_ok(units, false);
-    for (std::size_t k = 0; k < groups.size(); ++k)
+    std::vector<std::string> tie_failure(units, "its removal opened no hole");
+    for (std::size_t k = 0; k < groups.size(); ++k) {
       tie_ok[find(tie, units_of_group[k].front())] = true;
-    for (std::size_t k = 0; k < groups.size(); ++k)
-      if (!filled.holes[k].filled) tie_ok[find(tie, units_of_group[k].front())] = false;
+      tie_failure[find(tie, units_of_group[k].front())].clear();
+    }
+    for (std::size_t k = 0; k < groups.size(); ++k) {
+      const std::size_t t = find(tie, units_of_group[k].front());
+      if (filled.holes[k].filled || !tie_ok[t]) continue;
+      tie_ok[t] = false;
+      tie_failure[t] = "the patch of the hole it opened (" +
+                       std::to_string(filled.holes[k].border_edges) +
+                       " edges) was rejected: " + filled.holes[k].failure;
+    }
     std::vector<Triangle> surface;
     std::unique_ptr<Triangle_tree> tree;
     for (std::size_t t = 0; t < units; ++t) {
@@ -228,9 +246,12 @@ class Region_replacer {
         surface = surface_triangles();
         tree = std::make_unique<Triangle_tree>(surface.begin(), surface.end());
       }
-      if (!near_surface(t, tie, removed, *tree, bound)) {
+      const double farthest = farthest_removed_corner(t, tie, removed, *tree);
+      if (farthest > bound) {
         tie_ok[t] = false;
         ++report.regions_too_far;
+        tie_failure[t] = "its faces reach " + short_text(farthest) +
+                         " from the filled surface, over the bound " + short_text(bound);
       }
     }
     for (std::size_t k = 0; k < groups.size(); ++k) {
@@ -252,7 +273,13 @@ class Region_replacer {
         report.faces_not_restored += restore(removed[u]);
       }
     }
-    for (std::size_t r = 0; r < regions.size(); ++r) report.replaced.push_back(unit_ok[unit_of[r]]);
+    for (std::size_t r = 0; r < regions.size(); ++r) {
+      const std::size_t u = unit_of[r];
+      report.replaced.push_back(unit_ok[u]);
+      report.region_failure.push_back(unit_ok[u]           ? std::string()
+                                      : removed[u].skipped ? removed[u].failure
+                                                           : tie_failure[find(tie, u)]);
+    }
     record_per_region(unit_of, tie, removed, units_of_group, patches, filled, unit_ok, report);
     return report;
   }
@@ -280,6 +307,7 @@ class Region_replacer {
     std::vector<halfedge_descriptor> rim;
     std::unordered_set<vertex_descriptor> leaving;
     bool skipped = false;  ///< would pinch a vertex or remove a whole component: left alone
+    std::string failure;   ///< why it was skipped
   };
 
   /// Faces around a vertex in circulation order, and whether each stays (not removed, not a
@@ -491,18 +519,24 @@ class Region_replacer {
     return triangles;
   }
 
-  /// True when every corner of the faces the units of tie `t` removed lies within `bound` of the
+  /// The largest distance from a corner of the faces the units of tie `t` removed to the
   /// surface (`tree`): what a reader of the output measures as the geometry kept.
-  bool near_surface(std::size_t t, std::vector<std::size_t>& tie,
-                    const std::vector<Removed>& removed, const Triangle_tree& tree, double bound) {
-    const double squared_bound = bound * bound;
+  double farthest_removed_corner(std::size_t t, std::vector<std::size_t>& tie,
+                                 const std::vector<Removed>& removed, const Triangle_tree& tree) {
+    double farthest = 0;
     for (std::size_t u = 0; u < removed.size(); ++u) {
       if (removed[u].skipped || find(tie, u) != t) continue;
       for (const auto& corners : removed[u].positions)
         for (const Point& p : corners)
-          if (CGAL::to_double(tree.squared_distance(p)) > squared_bound) return false;
+          farthest = (std::max)(farthest, CGAL::to_double(tree.squared_distance(p)));
     }
-    return true;
+    return std::sqrt(farthest);
+  }
+
+  static std::string short_text(double value) {
+    std::ostringstream out;
+    out << std::setprecision(3) << value;
+    return out.str();
   }
 
   double face_area(face_descriptor f) const {
@@ -545,6 +579,7 @@ class Region_replacer {
       if (area > max_part_share * whole_area &&
           double(unit.faces.size()) > max_part_share * whole_faces) {
         unit.skipped = true;
+        unit.failure = "it holds too large a share of its part";
         ++report.regions_too_large;
       }
     }

@@ -517,12 +517,24 @@ void step_largest_component(PolygonMesh& pm, Repair_result& result, Any_visitor 
 
 /// The filling of the regions that automatic_repair removes (grown holes, self-intersections):
 /// CGAL's Liepa triangulation and fairing, which takes milliseconds on such holes, where the
-/// other methods' fallbacks take seconds on the holes they cannot fill.
-inline Fill_options replacement_fill_options(const Fill_options& fill) {
+/// other methods' fallbacks take seconds on the holes they cannot fill; with `last_resorts`,
+/// the coarser last resorts after it (Liepa_options::then_last_resorts).
+inline Fill_options replacement_fill_options(const Fill_options& fill, bool last_resorts) {
   Fill_options options = fill;
   options.method = Fill_method::liepa;
+  options.liepa.then_last_resorts = last_resorts;
   return options;
 }
+
+/// What a region replacement may change (Region_replacer's bounds) and how it fills.
+struct Replacement_bounds {
+  double max_deviation_in_border_edges = 0;  ///< 0: no bound
+  double max_deviation = std::numeric_limits<double>::infinity();
+  double max_part_share = 1;
+  /// Only where the deviation is bounded: a last resort (a triangulation of the border alone,
+  /// a base) stands for the faces it replaces only if it stays near them.
+  bool last_resorts = false;
+};
 
 /// One round of region replacement with `replacement_fill_options`; adds its counts to `total`.
 template <class PolygonMesh, class VertexPointMap, class GeomTraits>
@@ -531,13 +543,12 @@ Region_replacement_report replace_regions(
     Any_visitor visitor,
     const std::vector<std::vector<typename boost::graph_traits<PolygonMesh>::face_descriptor>>&
         regions,
-    Region_replacement_report& total, double max_deviation_in_border_edges = 0,
-    double max_deviation = std::numeric_limits<double>::infinity(), double max_part_share = 1) {
-  const Fill_options fill = replacement_fill_options(options.fill);
+    Region_replacement_report& total, const Replacement_bounds& bounds) {
+  const Fill_options fill = replacement_fill_options(options.fill, bounds.last_resorts);
   Region_replacer<PolygonMesh, VertexPointMap, GeomTraits> replacer(pm, vpm, traits, fill, visitor);
-  replacer.max_deviation_in_border_edges = max_deviation_in_border_edges;
-  replacer.max_deviation = max_deviation;
-  replacer.max_part_share = max_part_share;
+  replacer.max_deviation_in_border_edges = bounds.max_deviation_in_border_edges;
+  replacer.max_deviation = bounds.max_deviation;
+  replacer.max_part_share = bounds.max_part_share;
   const Region_replacement_report round = replacer.replace(regions);
   total.regions_replaced += round.regions_replaced;
   total.faces_removed += round.faces_removed;
@@ -609,23 +620,27 @@ bool faces_fit_the_border(
 /// is empty). `step` names the step in the report; `max_deviation_in_border_edges` bounds how
 /// far the removed faces may lie from the patch, in mean border edges and in
 /// `max_deviation_in_diagonals` of the mesh's bounding box (Region_replacer; 0: no bound).
+/// With `last_resorts`, a grown hole whose Liepa patch is rejected gets the last resorts of
+/// the fill sequences (Replacement_bounds::last_resorts).
 template <class PolygonMesh, class VertexPointMap, class GeomTraits, class Point>
 void step_grow_failed_holes(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
                             const Repair_options& options, const std::vector<Point>& border_points,
                             const std::vector<bool>& eligible, const char* step,
                             Any_visitor visitor, Repair_result& result,
-                            double max_deviation_in_border_edges = 0,
-                            double max_deviation_in_diagonals = 0) {
+                            double max_deviation_in_border_edges, double max_deviation_in_diagonals,
+                            bool last_resorts) {
   using Group = Hole_group<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor>;
   using face_descriptor = typename boost::graph_traits<PolygonMesh>::face_descriptor;
   std::vector<std::size_t> failed;
   std::vector<Point> keys;
+  std::vector<std::string> put_back;  // per failed hole: why its last grown region was put back
   for (std::size_t k = 0; k < result.holes.holes.size(); ++k) {
     const Hole_fill_report& hole = result.holes.holes[k];
     if (hole.filled || hole.skipped || (!eligible.empty() && !eligible[k])) continue;
     if (hole.border_edges > max_grown_hole_edges) continue;
     failed.push_back(k);
     keys.push_back(border_points[k]);
+    put_back.emplace_back();
   }
   if (failed.empty()) return;
   Step_timer timer(result, step, visitor);
@@ -662,14 +677,23 @@ void step_grow_failed_holes(PolygonMesh& pm, VertexPointMap vpm, const GeomTrait
       regions.push_back(std::move(region));
       in_round.push_back(i);
     }
+    Replacement_bounds bounds;
+    bounds.max_deviation_in_border_edges = max_deviation_in_border_edges;
+    bounds.max_deviation = max_deviation;
+    bounds.last_resorts = last_resorts;
     const Region_replacement_report round =
-        replace_regions(pm, vpm, traits, options, visitor, regions, total,
-                        max_deviation_in_border_edges, max_deviation);
+        replace_regions(pm, vpm, traits, options, visitor, regions, total, bounds);
     std::vector<std::size_t> still_failed;
     std::vector<Point> still_keys;
+    std::vector<std::string> still_put_back;
     std::vector<std::size_t> region_of(failed.size(), std::size_t(-1));
-    for (std::size_t j = 0; j < in_round.size(); ++j)
+    for (std::size_t j = 0; j < in_round.size(); ++j) {
       if (round.replaced[j]) region_of[in_round[j]] = j;
+      if (!round.replaced[j])
+        put_back[in_round[j]] =
+            "the faces within " + std::to_string(rings) +
+            " vertex ring(s) of its border were removed and put back: " + round.region_failure[j];
+    }
     std::size_t filled_now = 0;
     for (std::size_t i = 0; i < failed.size(); ++i) {
       Hole_fill_report& hole = result.holes.holes[failed[i]];
@@ -678,6 +702,7 @@ void step_grow_failed_holes(PolygonMesh& pm, VertexPointMap vpm, const GeomTrait
       if (j == std::size_t(-1)) {
         still_failed.push_back(failed[i]);
         still_keys.push_back(keys[i]);
+        still_put_back.push_back(put_back[i]);
         continue;
       }
       record_grown_fill(hole, rings, round, j);
@@ -690,6 +715,13 @@ void step_grow_failed_holes(PolygonMesh& pm, VertexPointMap vpm, const GeomTrait
     timer.count("filled_with_rings_" + std::to_string(rings), double(filled_now));
     failed.swap(still_failed);
     keys.swap(still_keys);
+    put_back.swap(still_put_back);
+  }
+  for (std::size_t i = 0; i < failed.size(); ++i) {
+    std::vector<std::string>& notes = result.holes.holes[failed[i]].notes;
+    // The second grow step (against other parts) often puts back for the same reason.
+    if (!put_back[i].empty() && (notes.empty() || notes.back() != put_back[i]))
+      notes.push_back(put_back[i]);
   }
   timer.count("faces_removed", double(total.faces_removed));
   timer.count("faces_added", double(total.faces_added));
@@ -801,9 +833,9 @@ void step_fill_meeting_other_parts(PolygonMesh& pm, VertexPointMap vpm, const Ge
     return;
   Repair_options grown = options;
   grown.fill = other_parts_no_obstacle(options.fill);
-  step_grow_failed_holes(pm, vpm, traits, grown, border_points, still_failed,
-                         "failed holes grown against other parts", visitor, result,
-                         max_grown_deviation_in_border_edges, max_grown_deviation_in_diagonals);
+  step_grow_failed_holes(
+      pm, vpm, traits, grown, border_points, still_failed, "failed holes grown against other parts",
+      visitor, result, max_grown_deviation_in_border_edges, max_grown_deviation_in_diagonals, true);
 }
 
 /// Fills the holes, grows the failed ones, fills what is left against other parts; returns a
@@ -848,7 +880,7 @@ std::vector<typename boost::property_traits<VertexPointMap>::value_type> step_fi
   if (!result.cancelled)
     step_grow_failed_holes(pm, vpm, traits, options, border_points, {}, "failed holes grown",
                            visitor, result, max_grown_deviation_in_border_edges,
-                           max_grown_deviation_in_diagonals);
+                           max_grown_deviation_in_diagonals, true);
   // Against other parts last: a hole whose grown border leaves the other part is closed cleanly
   // by the growth; what is left meets the other part wherever it is closed.
   if (!result.cancelled && options.fill.check_self_intersections)
@@ -1213,8 +1245,9 @@ void step_remove_self_intersections(PolygonMesh& pm, VertexPointMap vpm, const G
           for (vertex_descriptor v : vertices_around_face(halfedge(f, pm), pm)) seeds.push_back(v);
         regions.push_back(faces_within_rings(pm, seeds, rings));
       }
-      replace_regions(pm, vpm, traits, options, visitor, regions, total, 0,
-                      std::numeric_limits<double>::infinity(), max_replaced_part_share);
+      Replacement_bounds bounds;
+      bounds.max_part_share = max_replaced_part_share;
+      replace_regions(pm, vpm, traits, options, visitor, regions, total, bounds);
       pairs = within_component_pairs(between);
     }
   timer.count("regions_replaced", double(total.regions_replaced));
