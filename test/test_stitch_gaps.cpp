@@ -295,6 +295,26 @@ TEST(StitchGaps, ANodePairThatGluesNoEdgeStaysWhereItWas) {
     EXPECT_EQ(mesh.point(vertex_descriptor(static_cast<Mesh::size_type>(i))), soup.points[i]);
 }
 
+TEST(StitchGaps, TheFarCornersOfAFlapFoldedOntoItsNeighbourAreNotMerged) {
+  // Two triangles on one edge, the second folded back over the first (a folded scan border):
+  // their far corners are 0.05 apart, within the tolerance, far apart along the border and of
+  // no common face. Merged and glued, the two faces would be one face twice, a closed pillow
+  // whose duplicated face any reader removes, leaving a border.
+  Soup soup;
+  soup.points = {Point(0, 0, 0), Point(1, 0, 0), Point(0.5, 1, 0), Point(0.5, 1, 0.05)};
+  soup.faces = {{0, 1, 2}, {1, 0, 3}};
+  Mesh mesh = to_mesh(soup);
+  const MR::Stitch_result result = MR::stitch_gaps(mesh, MR::parameters::merge_tolerance(0.1));
+  EXPECT_TRUE(result.valid);
+  EXPECT_EQ(result.node_merges, 0u);
+  EXPECT_EQ(result.rejected_folded_flap, 1u);
+  EXPECT_EQ(result.edges_stitched, 0u);
+  EXPECT_EQ(mesh.number_of_faces(), 2u);
+  EXPECT_EQ(border_cycle_count(mesh), 1u);
+  for (std::size_t i = 0; i < soup.points.size(); ++i)
+    EXPECT_EQ(mesh.point(vertex_descriptor(static_cast<Mesh::size_type>(i))), soup.points[i]);
+}
+
 TEST(StitchGaps, NodesAlongOneBorderSideAreNotMergedEvenWithALargeTolerance) {
   // One open sheet, border edges of 1, tolerance 2.5: nodes two edges apart along the border
   // share no face and are within tolerance, but merging them would fold the border onto itself.

@@ -25,6 +25,9 @@ struct Stitch_result {
   std::size_t rejected_same_face = 0;         ///< pairs refused: two nodes of one face
   std::size_t rejected_too_far = 0;           ///< pairs refused: cluster would exceed tolerance
   std::size_t rejected_same_side = 0;         ///< clusters refused: two nodes along one border side
+  /// pairs refused: the far corners of the two faces of one edge (a folded flap; merged, the
+  /// two faces would be one duplicated face)
+  std::size_t rejected_folded_flap = 0;
   std::size_t t_junctions_split = 0;  ///< nodes inserted into border edges and kept (thesis 4.3)
   std::size_t t_junction_splits_undone = 0;     ///< inserted nodes removed again: glued to nothing
   std::size_t tangent_plane_merges = 0;         ///< merge points on the tangent-plane line
@@ -69,6 +72,7 @@ inline void write_json(Json_writer& json, const Stitch_result& r) {
       .field("rejected_same_face", r.rejected_same_face)
       .field("rejected_too_far", r.rejected_too_far)
       .field("rejected_same_side", r.rejected_same_side)
+      .field("rejected_folded_flap", r.rejected_folded_flap)
       .field("t_junctions_split", r.t_junctions_split)
       .field("t_junction_splits_undone", r.t_junction_splits_undone)
       .field("tangent_plane_merges", r.tangent_plane_merges)

@@ -204,6 +204,18 @@ class Gap_stitcher {
     return false;
   }
 
+  /// Whether `x` and `y` are the far corners of the two faces of one edge: a flap folded onto
+  /// its neighbour (a folded scan border). Merged, the two faces would have the same corners, a
+  /// duplicated face, which leaves a border when either copy is removed.
+  bool opposite_across_an_edge(vertex_descriptor x, vertex_descriptor y) const {
+    for (halfedge_descriptor h : halfedges_around_target(x, pm_)) {
+      if (is_border(h, pm_)) continue;
+      const halfedge_descriptor across = opposite(next(next(h, pm_), pm_), pm_);
+      if (!is_border(across, pm_) && target(next(across, pm_), pm_) == y) return true;
+    }
+    return false;
+  }
+
   double pair_tolerance(std::size_t a, std::size_t b) const {
     if (!settings_.merge_nodes) return 0.0;
     return std::min(node_tolerance_[a], node_tolerance_[b]);
@@ -215,6 +227,10 @@ class Gap_stitcher {
       for (std::size_t y : members(rb, members_b_)) {
         if (share_face(node_vertex_[x], node_vertex_[y])) {
           ++result_.rejected_same_face;
+          return false;
+        }
+        if (opposite_across_an_edge(node_vertex_[x], node_vertex_[y])) {
+          ++result_.rejected_folded_flap;
           return false;
         }
         const double d = norm(node_original_[x] - node_original_[y]);
@@ -267,7 +283,7 @@ class Gap_stitcher {
     coincident_possible_ = false;
     matching_pairs_valid_ = false;
     result_.node_merges = result_.rejected_same_face = result_.rejected_too_far = 0;
-    result_.rejected_same_side = 0;
+    result_.rejected_same_side = result_.rejected_folded_flap = 0;
   }
 
   /// Whether `h` (border, from u to v) is a degenerate or a multiple edge, or v ends another
@@ -353,6 +369,7 @@ class Gap_stitcher {
       double distance;
       std::size_t i, j;
       bool same_face;  // the two nodes share a face (computed here, in spatial order)
+      bool folded;     // opposite_across_an_edge
     };
     // Nodes within tolerance of each other can be O(n^2) pairs (a self-overlapping star polygon
     // whose long edges give a large derived tolerance: 1.77 M pairs on 5000 nodes), and joining
@@ -380,7 +397,8 @@ class Gap_stitcher {
           if (along_one_border_side(i, j, d))
             ++result_.rejected_same_side;
           else
-            collector.add({d, i, j, share_face(node_vertex_[i], node_vertex_[j])});
+            collector.add({d, i, j, share_face(node_vertex_[i], node_vertex_[j]),
+                           opposite_across_an_edge(node_vertex_[i], node_vertex_[j])});
         });
       }
     });
@@ -402,9 +420,13 @@ class Gap_stitcher {
       const std::size_t ri = root(c.i), rj = root(c.j);
       if (ri == rj) continue;
       if (cluster_size_[ri] == 1 && cluster_size_[rj] == 1) {
-        // can_unite() of two single nodes within tolerance: only the face test is left.
+        // can_unite() of two single nodes within tolerance: only the face tests are left.
         if (c.same_face) {
           ++result_.rejected_same_face;
+          continue;
+        }
+        if (c.folded) {
+          ++result_.rejected_folded_flap;
           continue;
         }
       } else if (!can_unite(ri, rj)) {
