@@ -911,10 +911,45 @@ TEST(AutomaticRepair, ABorderTouchingItselfAtCoincidentVerticesIsWeldedAndCounte
   EXPECT_EQ(filling->count("faces_added"), 2.0);
 }
 
-TEST(AutomaticRepair, HolesWithFoldedBordersAreGrownAndFilled) {
+// The contour's offending faces (exact predicates): none along a clean border, some along the
+// folded one, all of them near it.
+TEST(AutomaticRepair, OnlyAFoldedContourHasOffendingFaces) {
+  auto offending = [](const Mesh& mesh, std::size_t& range_size) {
+    std::vector<Mesh::Vertex_index> border;
+    for (auto h :
+         halfedges_around_face(CGAL::Mesh_repair::internal::border_cycles(mesh).front(), mesh))
+      border.push_back(mesh.target(h));
+    std::vector<int> ring_of;
+    const auto range = CGAL::Mesh_repair::internal::faces_within_rings(mesh, border, 2, &ring_of);
+    range_size = range.size();
+    return CGAL::Mesh_repair::internal::offending_contour_faces(mesh, mesh.points(), Kernel(),
+                                                                range, ring_of);
+  };
+  Mesh clean;
+  MR::make_sphere(clean, Point(0, 0, 0), 1.0, 4);
+  punch_hole(clean, Point(0, 0, 1), 0.35);
+  clean.collect_garbage();
+  std::size_t range = 0;
+  EXPECT_TRUE(offending(clean, range).empty());
+  EXPECT_GT(range, 0u);
+  const Mesh folded = sphere_with_folded_hole_border();
+  const auto found = offending(folded, range);
+  EXPECT_GT(found.size(), 0u);
+  EXPECT_LT(found.size(), range);
+}
+
+// Only the offending faces along the border go (the contour cleaning of step "failed holes
+// grown"): fewer than the faces of one vertex ring around it.
+TEST(AutomaticRepair, HolesWithFoldedBordersLoseTheirFoldedFacesAndAreFilled) {
   Mesh mesh = sphere_with_folded_hole_border();
   ASSERT_EQ(count_border_cycles(mesh), 1u);
   const std::size_t faces_before = mesh.number_of_faces();
+  std::vector<Mesh::Vertex_index> border;
+  for (auto h :
+       halfedges_around_face(CGAL::Mesh_repair::internal::border_cycles(mesh).front(), mesh))
+    border.push_back(mesh.target(h));
+  const std::size_t one_ring =
+      CGAL::Mesh_repair::internal::faces_within_rings(mesh, border, 1).size();
   // Every method's patch meets the folded faces: plain hole filling leaves the hole open.
   Mesh filled = mesh;
   const auto plain = MR::fill_holes(filled);
@@ -929,7 +964,9 @@ TEST(AutomaticRepair, HolesWithFoldedBordersAreGrownAndFilled) {
   const auto* grown = find_step(result, "failed holes grown");
   ASSERT_NE(grown, nullptr);
   EXPECT_EQ(grown->count("still_failed"), 0.0);
+  EXPECT_EQ(grown->count("filled_with_contour_cleaned"), 1.0);
   EXPECT_GT(grown->count("faces_removed"), 0.0);
+  EXPECT_LT(grown->count("faces_removed"), double(one_ring));
   ASSERT_EQ(result.holes.holes.size(), 1u);
   const auto& hole = result.holes.holes[0];
   EXPECT_TRUE(hole.filled);
@@ -941,7 +978,8 @@ TEST(AutomaticRepair, HolesWithFoldedBordersAreGrownAndFilled) {
   EXPECT_EQ(mesh.number_of_faces(),
             faces_before - std::size_t(grown->count("faces_removed")) + hole.faces_created);
   const std::string said = "filled after removing the " +
-                           std::to_string(std::size_t(grown->count("faces_removed"))) + " face(s)";
+                           std::to_string(std::size_t(grown->count("faces_removed"))) +
+                           " folded, crossing, degenerate or ear face(s) along its border";
   EXPECT_TRUE(std::any_of(hole.notes.begin(), hole.notes.end(), [&](const std::string& note) {
     return note.find(said) != std::string::npos;
   })) << hole.notes.back();

@@ -27,9 +27,9 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
-#include <memory>
-#include <map>
 #include <iomanip>
+#include <map>
+#include <memory>
 #include <numeric>
 #include <sstream>
 #include <string>
@@ -110,12 +110,13 @@ std::unordered_set<std::size_t> parts_in_contact(const PolygonMesh& pm, VertexPo
   return parts;
 }
 
-/// The faces within `rings` vertex rings of `seeds` (the seeds included).
+/// The faces within `rings` vertex rings of `seeds` (the seeds included), ring by ring; with
+/// `ring_of`, the ring of each (1: a face around a seed).
 template <class PolygonMesh>
 std::vector<typename boost::graph_traits<PolygonMesh>::face_descriptor> faces_within_rings(
     const PolygonMesh& pm,
     const std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor>& seeds,
-    int rings) {
+    int rings, std::vector<int>* ring_of = nullptr) {
   using GT = boost::graph_traits<PolygonMesh>;
   std::unordered_set<typename GT::vertex_descriptor> reached(seeds.begin(), seeds.end());
   std::vector<typename GT::vertex_descriptor> frontier(seeds.begin(), seeds.end());
@@ -127,6 +128,7 @@ std::vector<typename boost::graph_traits<PolygonMesh>::face_descriptor> faces_wi
       for (auto f : faces_around_target(halfedge(v, pm), pm)) {
         if (f == GT::null_face() || !seen.insert(f).second) continue;
         faces.push_back(f);
+        if (ring_of) ring_of->push_back(ring + 1);
         for (auto w : vertices_around_face(halfedge(f, pm), pm))
           if (reached.insert(w).second) next_frontier.push_back(w);
       }

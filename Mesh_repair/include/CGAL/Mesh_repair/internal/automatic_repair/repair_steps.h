@@ -11,6 +11,7 @@
 #include <CGAL/Mesh_repair/internal/automatic_repair/spike_relaxation.h>
 #include <CGAL/Mesh_repair/internal/automatic_repair/solid_union.h>
 #include <CGAL/Mesh_repair/internal/automatic_repair/through_holes.h>
+#include <CGAL/Mesh_repair/internal/clean_hole_contour/offending_faces.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/border_cycles.h>
 #include <CGAL/Mesh_repair/internal/mesh_counts.h>
 #include <CGAL/Mesh_repair/internal/stitching/run_gap_stitcher.h>
@@ -74,7 +75,10 @@ struct Repair_options {
 /// of its area to three rings, its concept sedan had panels moved by 2.4% of the diagonal).
 constexpr double max_grown_deviation_in_border_edges = 2.0;
 constexpr double max_grown_deviation_in_diagonals = 0.01;
-/// Failed holes are grown by 1, 2, then 3 vertex rings (step_grow_failed_holes).
+/// Failed holes lose the offending faces along their border (folded, crossing, degenerate,
+/// ears: offending_contour_faces) found within this many vertex rings, then are grown by 1, 2,
+/// then 3 vertex rings (step_grow_failed_holes).
+constexpr int contour_cleaning_rings = 2;
 constexpr int max_hole_growth_rings = 3;
 /// Holes with more border edges are not grown: growing is for the small holes of scanned
 /// borders, and Liepa's triangulation of a long border is cubic in its length.
@@ -572,12 +576,58 @@ std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor> group_
   return vertices;
 }
 
+/// What growth round `rings` removes around a hole, for the notes (round 0: the contour's
+/// offending faces).
+inline std::string grown_region_name(int rings) {
+  return rings == 0 ? "the folded, crossing, degenerate or ear faces along its border"
+                    : "the faces within " + std::to_string(rings) + " vertex ring(s) of its border";
+}
+
+/// The faces round 0 of step_grow_failed_holes removes around `group`: its contour's offending
+/// faces within `contour_cleaning_rings` vertex rings, those that reach its border through one
+/// another (by shared vertices): removed alone, the others would open a hole of their own and
+/// leave this one as it was. None for a ring hole (its islands may keep all their faces and then
+/// stay apart from the cleaned hole, open) nor where they reach another border (part of that
+/// hole's cycle would be cut off and left open): the rings take every cycle they meet.
+template <class PolygonMesh, class VertexPointMap, class GeomTraits, class Group>
+std::vector<typename boost::graph_traits<PolygonMesh>::face_descriptor> contour_cleaning_region(
+    const PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits, const Group& group) {
+  using vertex_descriptor = typename boost::graph_traits<PolygonMesh>::vertex_descriptor;
+  if (!group.islands.empty()) return {};
+  const std::vector<vertex_descriptor> border = group_vertices(pm, group);
+  std::vector<int> ring_of;
+  const auto range = faces_within_rings(pm, border, contour_cleaning_rings, &ring_of);
+  auto offending = offending_contour_faces(pm, vpm, traits, range, ring_of);
+  const std::unordered_set<vertex_descriptor> on_border(border.begin(), border.end());
+  std::unordered_set<vertex_descriptor> reached = on_border;
+  std::vector<typename boost::graph_traits<PolygonMesh>::face_descriptor> region;
+  for (bool grew = true; grew;) {
+    grew = false;
+    for (auto& f : offending) {
+      if (f == boost::graph_traits<PolygonMesh>::null_face()) continue;
+      const auto corners = vertices_around_face(halfedge(f, pm), pm);
+      if (std::none_of(corners.begin(), corners.end(), [&](auto v) { return reached.count(v); }))
+        continue;
+      for (auto v : corners) {
+        if (is_border(v, pm) && !on_border.count(v)) return {};
+        reached.insert(v);
+      }
+      region.push_back(f);
+      f = boost::graph_traits<PolygonMesh>::null_face();
+      grew = true;
+    }
+  }
+  return region;
+}
+
 /// Records in `hole` the region replacement `j` of `round` that closed it: the faces removed
 /// around it and the patch that replaced them (shared with the holes its region merged with).
 inline void record_grown_fill(Hole_fill_report& hole, int rings,
                               const Region_replacement_report& round, std::size_t j) {
-  std::string note = "filled after removing the " + std::to_string(round.region_faces_removed[j]) +
-                     " face(s) within " + std::to_string(rings) + " vertex ring(s) of its border";
+  std::string note =
+      "filled after removing the " + std::to_string(round.region_faces_removed[j]) +
+      (rings == 0 ? " folded, crossing, degenerate or ear face(s) along its border"
+                  : " face(s) within " + std::to_string(rings) + " vertex ring(s) of its border");
   if (round.regions_merged[j] > 1)
     note += " (one region with " + std::to_string(round.regions_merged[j] - 1) +
             " other hole(s); the counts are the region's)";
@@ -612,23 +662,24 @@ bool faces_fit_the_border(
 }
 
 /// Holes whose every patch was rejected (on scans: folded, overlapping and needle faces along a
-/// jagged border make every patch meet the border's own faces) are grown by the faces within
-/// 1, then 2, then 3 vertex rings of their border and filled again; a grown hole that still
-/// cannot be filled gets its faces back (Region_replacer). `border_points` holds a border point
-/// of each hole of `result.holes.holes` (the exact position finds the hole again after its
+/// jagged border make every patch meet the border's own faces) lose first only those faces
+/// (offending_contour_faces, Pernot's contour cleaning as a choice of faces), then every face
+/// within 1, then 2, then 3 vertex rings of their border, and are filled again; a grown hole that
+/// still cannot be filled gets its faces back (Region_replacer). `border_points` holds a border
+/// point of each hole of `result.holes.holes` (the exact position finds the hole again after its
 /// halfedges were removed and put back); only the holes `eligible` marks are grown (all when it
 /// is empty). `step` names the step in the report; `max_deviation_in_border_edges` bounds how
 /// far the removed faces may lie from the patch, in mean border edges and in
 /// `max_deviation_in_diagonals` of the mesh's bounding box (Region_replacer; 0: no bound).
-/// With `last_resorts`, a grown hole whose Liepa patch is rejected gets the last resorts of
-/// the fill sequences (Replacement_bounds::last_resorts).
+/// A grown hole whose Liepa patch is rejected gets the last resorts of the fill sequences
+/// (Replacement_bounds::last_resorts).
 template <class PolygonMesh, class VertexPointMap, class GeomTraits, class Point>
 void step_grow_failed_holes(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
                             const Repair_options& options, const std::vector<Point>& border_points,
                             const std::vector<bool>& eligible, const char* step,
                             Any_visitor visitor, Repair_result& result,
-                            double max_deviation_in_border_edges, double max_deviation_in_diagonals,
-                            bool last_resorts) {
+                            double max_deviation_in_border_edges,
+                            double max_deviation_in_diagonals) {
   using Group = Hole_group<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor>;
   using face_descriptor = typename boost::graph_traits<PolygonMesh>::face_descriptor;
   std::vector<std::size_t> failed;
@@ -650,7 +701,9 @@ void step_grow_failed_holes(PolygonMesh& pm, VertexPointMap vpm, const GeomTrait
                                    : std::numeric_limits<double>::infinity();
   Region_replacement_report total;
   std::size_t not_grown = 0;
-  for (int rings = 1; rings <= max_hole_growth_rings && !failed.empty(); ++rings) {
+  // Round 0 removes only the offending faces along the border (offending_contour_faces), then
+  // rounds 1 to 3 every face within that many vertex rings.
+  for (int rings = 0; rings <= max_hole_growth_rings && !failed.empty(); ++rings) {
     // The groups again: a grown hole put back has new halfedges; its key point finds it.
     std::map<Point, Group> group_at;
     for (const Group& group : hole_groups(pm, vpm, options.fill.detect_ring_holes))
@@ -663,7 +716,10 @@ void step_grow_failed_holes(PolygonMesh& pm, VertexPointMap vpm, const GeomTrait
       auto it = group_at.find(keys[i]);
       if (it == group_at.end()) continue;
       std::vector<face_descriptor> region =
-          faces_within_rings(pm, group_vertices(pm, it->second), rings);
+          rings == 0 ? contour_cleaning_region(pm, vpm, traits, it->second)
+                     : faces_within_rings(pm, group_vertices(pm, it->second), rings);
+      if (rings == 0 && (region.empty() || !faces_fit_the_border(pm, vpm, region, it->second)))
+        continue;
       if (!faces_fit_the_border(pm, vpm, region, it->second)) {
         result.holes.holes[failed[i]].notes.push_back(
             "not grown: the faces within " + std::to_string(rings) +
@@ -680,7 +736,7 @@ void step_grow_failed_holes(PolygonMesh& pm, VertexPointMap vpm, const GeomTrait
     Replacement_bounds bounds;
     bounds.max_deviation_in_border_edges = max_deviation_in_border_edges;
     bounds.max_deviation = max_deviation;
-    bounds.last_resorts = last_resorts;
+    bounds.last_resorts = true;
     const Region_replacement_report round =
         replace_regions(pm, vpm, traits, options, visitor, regions, total, bounds);
     std::vector<std::size_t> still_failed;
@@ -691,8 +747,7 @@ void step_grow_failed_holes(PolygonMesh& pm, VertexPointMap vpm, const GeomTrait
       if (round.replaced[j]) region_of[in_round[j]] = j;
       if (!round.replaced[j])
         put_back[in_round[j]] =
-            "the faces within " + std::to_string(rings) +
-            " vertex ring(s) of its border were removed and put back: " + round.region_failure[j];
+            grown_region_name(rings) + " were removed and put back: " + round.region_failure[j];
     }
     std::size_t filled_now = 0;
     for (std::size_t i = 0; i < failed.size(); ++i) {
@@ -712,7 +767,10 @@ void step_grow_failed_holes(PolygonMesh& pm, VertexPointMap vpm, const GeomTrait
       ++result.holes.filled;
       ++filled_now;
     }
-    timer.count("filled_with_rings_" + std::to_string(rings), double(filled_now));
+    if (rings > 0 || filled_now > 0)
+      timer.count(rings == 0 ? std::string("filled_with_contour_cleaned")
+                             : "filled_with_rings_" + std::to_string(rings),
+                  double(filled_now));
     failed.swap(still_failed);
     keys.swap(still_keys);
     put_back.swap(still_put_back);
@@ -833,9 +891,9 @@ void step_fill_meeting_other_parts(PolygonMesh& pm, VertexPointMap vpm, const Ge
     return;
   Repair_options grown = options;
   grown.fill = other_parts_no_obstacle(options.fill);
-  step_grow_failed_holes(
-      pm, vpm, traits, grown, border_points, still_failed, "failed holes grown against other parts",
-      visitor, result, max_grown_deviation_in_border_edges, max_grown_deviation_in_diagonals, true);
+  step_grow_failed_holes(pm, vpm, traits, grown, border_points, still_failed,
+                         "failed holes grown against other parts", visitor, result,
+                         max_grown_deviation_in_border_edges, max_grown_deviation_in_diagonals);
 }
 
 /// Fills the holes, grows the failed ones, fills what is left against other parts; returns a
@@ -880,7 +938,7 @@ std::vector<typename boost::property_traits<VertexPointMap>::value_type> step_fi
   if (!result.cancelled)
     step_grow_failed_holes(pm, vpm, traits, options, border_points, {}, "failed holes grown",
                            visitor, result, max_grown_deviation_in_border_edges,
-                           max_grown_deviation_in_diagonals, true);
+                           max_grown_deviation_in_diagonals);
   // Against other parts last: a hole whose grown border leaves the other part is closed cleanly
   // by the growth; what is left meets the other part wherever it is closed.
   if (!result.cancelled && options.fill.check_self_intersections)
