@@ -216,13 +216,26 @@ std::string shorten(const std::string& text, std::size_t length) {
   return text.size() <= length ? text : text.substr(0, length - 3) + "...";
 }
 
+// What filled a hole, for the picture: the method, or the last resort that closed it when the
+// methods' patches were rejected (its report's `used` is then Liepa, whose stages the last
+// resorts are; the note names the stage: "filled by base: ...").
+std::string patch_label(const CGAL::Mesh_repair::Hole_fill_report& report) {
+  const std::string prefix = "filled by ";
+  for (const std::string& note : report.notes) {
+    if (note.rfind(prefix, 0) != 0) continue;
+    const std::size_t end = note.find(": the patches of the methods before it were rejected");
+    if (end != std::string::npos) return note.substr(prefix.size(), end - prefix.size());
+  }
+  return CGAL::Mesh_repair::to_string(report.used);
+}
+
 // Each patch face's legend index: the method that filled its hole.
 std::map<Mesh::Face_index, double> faces_by_method(const CGAL::Mesh_repair::Fill_result& result,
                                                    const std::vector<Shown_hole>& filled,
                                                    std::vector<std::string>& legend) {
   std::map<Mesh::Face_index, double> category;
   for (const Shown_hole& hole : filled) {
-    const std::string name = CGAL::Mesh_repair::to_string(result.holes[hole.report].used);
+    const std::string name = patch_label(result.holes[hole.report]);
     auto it = std::find(legend.begin(), legend.end(), name);
     if (it == legend.end()) it = legend.insert(legend.end(), name);
     for (Mesh::Face_index f : hole.patch) category[f] = double(it - legend.begin());
@@ -248,9 +261,9 @@ Picture_panel hole_panel(const Mesh& mesh, const Shown_hole& hole,
   panel.normal = hole.patch.empty() ? mean_normal(mesh, around) : mean_normal(mesh, hole.patch);
   panel.title = "hole " + std::to_string(hole.report) + ": " + std::to_string(hole.border_edges) +
                 " border edges";
-  panel.subtitle = report.filled ? std::string(CGAL::Mesh_repair::to_string(report.used)) + ", " +
-                                       std::to_string(report.faces_created) + " faces"
-                                 : "left open: " + shorten(report.failure, 80);
+  panel.subtitle =
+      report.filled ? patch_label(report) + ", " + std::to_string(report.faces_created) + " faces"
+                    : "left open: " + shorten(report.failure, 80);
   return panel;
 }
 
