@@ -7,6 +7,7 @@
 #include <CGAL/Mesh_repair/hole_benchmark.h>
 #include <CGAL/Mesh_repair/hole_filling/advancing_front.h>
 #include <CGAL/Mesh_repair/io.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Surface_mesh.h>
@@ -705,6 +706,35 @@ TEST(FillHolesDemoData, HolesOffIsClosedValidAndPatchesDoNotIntersect) {
 TEST(FillHolesDemoData, SaddleLoopAcrossTheCylinderIsClosedByEachFrontMethod) {
   expect_demo_mesh_filled("cylinder_locally_refined.off", MR::Fill_method::advancing_front);
   expect_demo_mesh_filled("cylinder_locally_refined.off", MR::Fill_method::shape_prediction);
+}
+
+/// blobby_3cc is a blob cut into three pieces a thin crack apart. The cut of one piece faces its
+/// neighbours' caps, every faired patch crosses them, and the front goes around the neighbour:
+/// its remnant (130 edges for a 71-edge hole) was closed by 2,831 faces, a bag wrapping the whole
+/// model. A remnant longer than the border is no longer closed: every patch kept stays inside
+/// the model's box, and the hole no method fills without crossing a neighbour is left open.
+TEST(FillHolesDemoData, APieceFacingItsNeighboursAcrossACrackIsNotWrappedInABag) {
+  const fs::path path = fs::path(MESH_REPAIR_DEMO_DATA_DIR) / "blobby_3cc.off";
+  if (!fs::exists(path)) GTEST_SKIP() << path << " absent (scripts/fetch_demo_data.sh)";
+  Mesh mesh;
+  MR::Soup_repair_report soup;
+  ASSERT_EQ(MR::read_mesh(path.string(), mesh, soup), "");
+  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(mesh);
+  const std::size_t original_faces = num_faces(mesh);
+  const MR::Fill_result result = MR::fill_holes(mesh);
+  ASSERT_EQ(result.holes.size(), 4u);
+  EXPECT_GE(result.filled, 3u);
+  EXPECT_LT(num_faces(mesh), original_faces + 1500);  // the caps: about 800 faces
+  const CGAL::Bbox_3 filled = CGAL::Polygon_mesh_processing::bbox(mesh);
+  const double margin =
+      0.01 * std::sqrt(CGAL::squared_distance(Point(box.xmin(), box.ymin(), box.zmin()),
+                                              Point(box.xmax(), box.ymax(), box.zmax())));
+  for (int d = 0; d < 3; ++d) {
+    EXPECT_GE(filled.min(d), box.min(d) - margin) << d;
+    EXPECT_LE(filled.max(d), box.max(d) + margin) << d;
+  }
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  EXPECT_EQ(new_intersections(mesh, original_faces), 0u);
 }
 
 #ifdef MESH_REPAIR_CLI

@@ -243,6 +243,7 @@ class Advancing_front {
       vector_area = add(vector_area, scale(cross(p, q), 0.5));
     }
     hole_normal_ = normalized(vector_area);
+    border_length_ = perimeter;
     mean_length_ = n > 0 ? perimeter / double(n) : 1.0;
     if (!(mean_length_ > 0)) mean_length_ = 1.0;
     cell_ = 2.0 * mean_length_;
@@ -323,8 +324,20 @@ class Advancing_front {
     if (!result.closed) result.remnant = open_loops();
     if (!result.closed && options_.close_remnant && !options_.defer_3d_test) {
       result.remnant_edges = 0;
-      for (const auto& loop : result.remnant) result.remnant_edges += loop.size();
-      bool all = true;
+      double remnant_length = 0;
+      for (const auto& loop : result.remnant) {
+        result.remnant_edges += loop.size();
+        for (std::size_t k = 0; k < loop.size(); ++k)
+          remnant_length += norm(sub(points_[loop[(k + 1) % loop.size()]], points_[loop[k]]));
+      }
+      // A front that placed triangles and is left longer than the hole's border went around
+      // something in the hole (another piece of the surface across it): the least-area closing
+      // of such loops spans past the hole, a bag around the piece (libcgal-demo's
+      // blobby_3cc.off: a 130-edge remnant of a 71-edge hole closed by 2,831 faces enclosing the
+      // whole model). A front stuck at once is the border itself, which may be closed.
+      const bool grew = !triangles_.empty() && remnant_length > border_length_;
+      if (grew) result.failure += "; its remnant is longer than the hole's border (not closed)";
+      bool all = !grew;
       for (const auto& loop : result.remnant) all = all && close_remnant(loop);
       if (all) {
         result.closed = true;
@@ -1456,6 +1469,7 @@ class Advancing_front {
   mutable std::size_t steps_ = 0;   ///< apexes tried by `least_area_triangulation`
   std::size_t alive_ = 0, border_count_ = 0, max_triangles_ = 0;
   double mean_length_ = 1, cell_ = 1, triangle_cell_ = 1;
+  double border_length_ = 0;  ///< the hole's perimeter
   Vec3 hole_normal_{0, 0, 1};
 };
 
