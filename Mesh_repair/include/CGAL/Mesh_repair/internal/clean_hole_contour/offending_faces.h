@@ -40,7 +40,11 @@ std::vector<typename boost::graph_traits<PolygonMesh>::face_descriptor> offendin
   using GT = boost::graph_traits<PolygonMesh>;
   using face_descriptor = typename GT::face_descriptor;
   std::unordered_map<face_descriptor, int> ring;
-  for (std::size_t i = 0; i < range.size() && i < ring_of.size(); ++i) ring[range[i]] = ring_of[i];
+  std::unordered_map<face_descriptor, std::size_t> position;  // in `range`: each edge once
+  for (std::size_t i = 0; i < range.size(); ++i) {
+    position[range[i]] = i;
+    if (i < ring_of.size()) ring[range[i]] = ring_of[i];
+  }
   std::unordered_set<face_descriptor> offending, degenerate;
   auto offends = [&](face_descriptor f, face_descriptor g) {
     if (ring[f] <= ring[g]) offending.insert(f);
@@ -58,7 +62,8 @@ std::vector<typename boost::graph_traits<PolygonMesh>::face_descriptor> offendin
     if (degenerate.count(f)) continue;  // the angle of a degenerate face is not defined
     for (auto h : halfedges_around_face(halfedge(f, pm), pm)) {
       const face_descriptor g = face(opposite(h, pm), pm);
-      if (g == GT::null_face() || !ring.count(g) || degenerate.count(g)) continue;
+      const auto other = position.find(g);
+      if (other == position.end() || other->second < position[f] || degenerate.count(g)) continue;
       const auto p = get(vpm, source(h, pm)), q = get(vpm, target(h, pm));
       const auto r = get(vpm, target(next(h, pm), pm));
       const auto s = get(vpm, target(next(opposite(h, pm), pm), pm));
@@ -78,7 +83,10 @@ std::vector<typename boost::graph_traits<PolygonMesh>::face_descriptor> offendin
   for (bool changed = true; changed;) {
     changed = false;
     for (face_descriptor f : range)
-      if (!offending.count(f) && open_edges(f) >= 2) changed = offending.insert(f).second;
+      if (!offending.count(f) && open_edges(f) >= 2) {
+        offending.insert(f);
+        changed = true;
+      }
   }
   std::vector<face_descriptor> faces;
   for (face_descriptor f : range)
