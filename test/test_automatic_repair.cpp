@@ -6,6 +6,7 @@
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Mesh_repair/detect_defects.h>
 #include <CGAL/Mesh_repair/generators.h>
+#include <CGAL/Mesh_repair/internal/child_process.h>
 #include <CGAL/Mesh_repair/io.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
@@ -18,6 +19,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <csignal>
 #include <filesystem>
 #include <limits>
 #include <map>
@@ -54,6 +56,25 @@ Mesh sphere_with_holes() {
   punch_hole(sphere, Point(0, 0, 1), 0.35);
   sphere.collect_garbage();
   return sphere;
+}
+
+/// CGAL 5.5's experimental autorefinement runs in a child process (child_process.h): a crash
+/// there ends the child only, and the caller learns the signal; a child that finishes hands its
+/// bytes back whole, however many.
+TEST(AutomaticRepair, ACrashInAChildProcessEndsOnlyTheChild) {
+  namespace MI = CGAL::Mesh_repair::internal;
+  const MI::Child_outcome crashed = MI::run_in_child_process([]() -> std::string {
+    std::raise(SIGSEGV);
+    return "never";
+  });
+  EXPECT_FALSE(crashed.finished);
+  EXPECT_EQ(crashed.signal, SIGSEGV);
+  EXPECT_TRUE(crashed.bytes.empty());
+  const MI::Child_outcome done =
+      MI::run_in_child_process([] { return std::string(1 << 20, 'x') + "end"; });
+  EXPECT_TRUE(done.finished);
+  EXPECT_EQ(done.bytes.size(), (1u << 20) + 3);
+  EXPECT_EQ(done.bytes.substr(done.bytes.size() - 3), "end");
 }
 
 TEST(AutomaticRepair, SphereWithThreeHolesBecomesClosedAndValid) {

@@ -5,6 +5,7 @@
 
 #include <CGAL/Mesh_repair/internal/automatic_repair/solid_union.h>
 #include <CGAL/Mesh_repair/internal/automatic_repair/solid_soup.h>
+#include <CGAL/Mesh_repair/internal/child_process.h>
 
 #include <CGAL/Polygon_mesh_processing/corefinement.h>
 #include <CGAL/Polygon_mesh_processing/distance.h>
@@ -14,7 +15,10 @@
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/boost/graph/helpers.h>
 
+#include <cstring>
 #include <exception>
+#include <string>
+#include <vector>
 
 namespace CGAL {
 namespace Mesh_repair {
@@ -44,11 +48,14 @@ CGAL_MESH_REPAIR_CORE_INLINE std::string union_of_solids(const std::vector<Trian
   return {};
 }
 
-CGAL_MESH_REPAIR_CORE_INLINE std::string remove_self_intersections_of_solid(
-    const Triangle_soup& solid, Triangle_soup& out, Solid_autorefinement& measures) {
+namespace solid_union {
+
+/// The body of `remove_self_intersections_of_solid`, in this process.
+inline std::string autorefine(const Triangle_soup& solid, Triangle_soup& out,
+                              Solid_autorefinement& measures) {
   namespace PMP = CGAL::Polygon_mesh_processing;
   Core_mesh mesh;
-  std::string why = solid_union::to_closed_mesh(solid, mesh);
+  std::string why = to_closed_mesh(solid, mesh);
   if (!why.empty()) return why;
   const Core_mesh before = mesh;
   measures.area_before = PMP::area(mesh);
@@ -67,8 +74,89 @@ CGAL_MESH_REPAIR_CORE_INLINE std::string remove_self_intersections_of_solid(
   measures.area_after = PMP::area(mesh);
   measures.largest_distance =
       PMP::max_distance_to_triangle_mesh<CGAL::Sequential_tag>(before.points(), mesh);
-  solid_union::to_soup(mesh, out);
+  to_soup(mesh, out);
   return {};
+}
+
+/// The result of `autorefine` as bytes, from the child process to this one.
+class Autorefinement_bytes {
+ public:
+  static std::string write(const std::string& why, const Triangle_soup& out,
+                           const Solid_autorefinement& m) {
+    Autorefinement_bytes b;
+    b.put(why.size());
+    b.bytes_ += why;
+    for (double x : {m.area_before, m.area_after, m.largest_distance}) b.put(x);
+    b.put(out.points.size());
+    for (const auto& p : out.points)
+      for (int d = 0; d < 3; ++d) b.put(p[d]);
+    b.put(out.polygons.size());
+    for (const auto& t : out.polygons)
+      for (int k = 0; k < 3; ++k) b.put(t.size() == 3 ? t[k] : 0);
+    return b.bytes_;
+  }
+  /// False when the bytes are not a whole result.
+  static bool read(const std::string& bytes, std::string& why, Triangle_soup& out,
+                   Solid_autorefinement& m) {
+    Autorefinement_bytes b;
+    b.bytes_ = bytes;
+    std::size_t length = 0, points = 0, triangles = 0;
+    if (!b.get(length) || length > bytes.size()) return false;
+    why = bytes.substr(b.at_, length);
+    b.at_ += length;
+    if (!b.get(m.area_before) || !b.get(m.area_after) || !b.get(m.largest_distance) ||
+        !b.get(points) || points > bytes.size())
+      return false;
+    out = Triangle_soup();
+    for (std::size_t i = 0; i < points; ++i) {
+      double x = 0, y = 0, z = 0;
+      if (!b.get(x) || !b.get(y) || !b.get(z)) return false;
+      out.points.emplace_back(x, y, z);
+    }
+    if (!b.get(triangles) || triangles > bytes.size()) return false;
+    for (std::size_t i = 0; i < triangles; ++i) {
+      std::vector<std::size_t> t(3);
+      for (std::size_t& v : t)
+        if (!b.get(v) || v >= points) return false;
+      out.polygons.push_back(std::move(t));
+    }
+    return b.at_ == bytes.size();
+  }
+
+ private:
+  template <class T>
+  void put(T value) {
+    bytes_.append(reinterpret_cast<const char*>(&value), sizeof value);
+  }
+  template <class T>
+  bool get(T& value) {
+    if (bytes_.size() - at_ < sizeof value) return false;
+    std::memcpy(&value, bytes_.data() + at_, sizeof value);
+    at_ += sizeof value;
+    return true;
+  }
+  std::string bytes_;
+  std::size_t at_ = 0;
+};
+
+}  // namespace solid_union
+
+CGAL_MESH_REPAIR_CORE_INLINE std::string remove_self_intersections_of_solid(
+    const Triangle_soup& solid, Triangle_soup& out, Solid_autorefinement& measures) {
+  // In a child process (child_process.h): CGAL 5.5's experimental autorefinement crashes on
+  // some parts, and the caller then takes the exact arrangement instead.
+  const Child_outcome child = run_in_child_process([&solid] {
+    Triangle_soup refined;
+    Solid_autorefinement m;
+    const std::string why = solid_union::autorefine(solid, refined, m);
+    return solid_union::Autorefinement_bytes::write(why, refined, m);
+  });
+  if (!child.finished)
+    return "CGAL's autorefinement crashed (signal " + std::to_string(child.signal) + ")";
+  std::string why;
+  if (!solid_union::Autorefinement_bytes::read(child.bytes, why, out, measures))
+    return "CGAL's autorefinement returned no readable result";
+  return why;
 }
 
 }  // namespace internal
