@@ -15,10 +15,15 @@
 
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
+
 #include <algorithm>
 #include <chrono>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <string>
 #include <sstream>
 
@@ -63,7 +68,9 @@ const char* const repair_help =
     "                           components are kept unless --merge-intersecting-solids)\n"
     "  --merge-intersecting-solids  replace closed parts that intersect one another by their\n"
     "                           union (CGAL corefinement; the faces inside are removed)\n"
-    "  --threads N              threads for independent holes (default: all cores)\n"
+    "  --threads N              threads of the whole command: independent holes, "
+    "self-intersection\n"
+    "                           counts, defect reports (default: all cores)\n"
     "  --seed S                 seed of the randomised methods (default 0)\n"
     "  --binary                 binary STL/PLY output\n"
     "  --quiet                  no progress bar\n"
@@ -287,6 +294,13 @@ int repair_one(const Arguments& args) {
   const double tolerance = tolerance_option(args, mesh);
   const long long threads = args.get_int("--threads", 0);
   if (threads < 0) throw Input_error("--threads must be positive");
+#ifdef CGAL_LINKED_WITH_TBB
+  // The whole command, the defect reports before and after included, not only the repair.
+  std::unique_ptr<tbb::global_control> thread_limit;
+  if (threads > 0)
+    thread_limit = std::make_unique<tbb::global_control>(
+        tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+#endif
   const long long continuity = args.get_int("--continuity", 1);
   if (continuity < 0 || continuity > 2) throw Input_error("--continuity must be 0, 1 or 2");
   if (args.has("--keep-components") && args.has("--largest-component"))
