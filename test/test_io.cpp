@@ -15,7 +15,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <sstream>
+#include <vector>
 
 namespace {
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -265,6 +267,50 @@ TEST(SoupRepair, PolygonsCgalCannotTriangulateAreSplitIntoFans) {
   EXPECT_EQ(report.triangles_from_polygons, 2u + 5u + 2u);
   EXPECT_EQ(num_faces(mesh), 9u);
   for (auto f : faces(mesh)) EXPECT_EQ(CGAL::degree(f, mesh), 3u);
+}
+
+// Reading a file of large polygons gives the same halfedges every time, wherever the heap
+// puts things. CGAL's triangulate_face creates the edges of a polygon in the order of its
+// triangulation's edge iterator (by memory address): the same file read twice, with other
+// allocations between the reads, gave other halfedge indices (45 of 49 reads of a 60-gon in a
+// test program), and every later choice made in index order followed. Here the triangles are
+// sorted and their edges created in that order (internal/face_triangulation.h).
+TEST(SoupRepair, PolygonsAreTriangulatedIntoTheSameHalfedgesWhateverTheHeap) {
+  const fs::path path = scratch("polygons.obj");
+  std::ostringstream obj;
+  const int n = 60;
+  for (int i = 0; i < n; ++i) {
+    const double a = 2 * CGAL_PI * i / n, r = i % 3 == 0 ? 1.0 : 0.7 + 0.1 * std::sin(5.0 * i);
+    obj << "v " << r * std::cos(a) << ' ' << r * std::sin(a) << ' ' << 0.05 * std::cos(3 * a)
+        << '\n';
+  }
+  obj << 'f';
+  for (int i = 1; i <= n; ++i) obj << ' ' << i;
+  obj << '\n';
+  write_text(path, obj.str());
+  auto connectivity = [](const Mesh& m) {
+    std::vector<std::size_t> c;
+    for (auto h : halfedges(m))
+      c.insert(c.end(),
+               {std::size_t(target(h, m)), std::size_t(next(h, m)), std::size_t(face(h, m))});
+    return c;
+  };
+  std::vector<std::unique_ptr<char[]>> held;
+  std::size_t size = 1;
+  std::vector<std::size_t> first;
+  for (int read = 0; read < 20; ++read) {
+    for (int k = 0; k < 200; ++k) held.emplace_back(new char[size = (size * 7919 + 13) % 4001 + 1]);
+    for (int k = 0; k < 100; ++k) held.erase(held.begin() + long((size * (k + 1)) % held.size()));
+    Mesh mesh;
+    MR::Soup_repair_report report;
+    ASSERT_EQ(MR::read_mesh(path.string(), mesh, report), "");
+    ASSERT_EQ(num_faces(mesh), std::size_t(n - 2));
+    ASSERT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+    if (read == 0)
+      first = connectivity(mesh);
+    else
+      EXPECT_EQ(connectivity(mesh), first) << "read " << read;
+  }
 }
 
 // A pentagon whose corners lie 1e-60 apart beside one 4.4 away: seen along the Newell normal its

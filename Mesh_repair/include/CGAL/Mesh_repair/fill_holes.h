@@ -60,11 +60,13 @@ namespace internal {
 template <class halfedge_descriptor>
 using Hole_list = std::vector<halfedge_descriptor>;
 
-/// "0.0123 s": a duration for the reports, three significant digits.
+/// "1.23e-02 s": a duration for the reports, three significant digits, always as long: text
+/// whose length follows the clock would make the heap's layout, and with it the order in which
+/// CGAL's triangulations visit their elements (by address), differ from run to run.
 template <class Duration>
 std::string seconds_text(Duration duration) {
   char text[32];
-  std::snprintf(text, sizeof text, "%.3g s", std::chrono::duration<double>(duration).count());
+  std::snprintf(text, sizeof text, "%.2e s", std::chrono::duration<double>(duration).count());
   return text;
 }
 

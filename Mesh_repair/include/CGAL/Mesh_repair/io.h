@@ -28,6 +28,7 @@
 #include <CGAL/Mesh_repair/json_writer.h>
 #include <CGAL/Mesh_repair/polygon_soup.h>
 #include <CGAL/Mesh_repair/soup_repair_report.h>
+#include <CGAL/Mesh_repair/internal/face_triangulation.h>
 #include <CGAL/Mesh_repair/internal/polygon_projection.h>
 #include <CGAL/Mesh_repair/internal/soup_validation.h>
 #include <CGAL/Mesh_repair/internal/soup_edge.h>
@@ -446,7 +447,10 @@ std::string soup_to_mesh(const Polygon_soup<Point>& soup, PolygonMesh& pm, bool 
     if (large_crossing_polygon) return triangulate_soup_to_mesh(soup, pm, report);
     if (non_triangles > 0) {
       const std::size_t before = num_faces(pm);
-      if (!PMP::triangulate_faces(pm)) return triangulate_soup_to_mesh(soup, pm, report);
+      // In an order fixed by the polygons (internal/face_triangulation.h): with CGAL's, the
+      // halfedge indices, and every later choice made in index order, change from run to run.
+      if (!internal::triangulate_faces_in_fixed_order(pm))
+        return triangulate_soup_to_mesh(soup, pm, report);
       report.polygons_triangulated = non_triangles;
       report.triangles_from_polygons = num_faces(pm) - before + non_triangles;
       // CGAL 5.5's triangulate_faces can return a corrupt halfedge structure for a non-planar

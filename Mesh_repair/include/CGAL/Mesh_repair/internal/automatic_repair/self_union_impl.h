@@ -27,6 +27,7 @@
 
 #include <boost/container/small_vector.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
@@ -118,10 +119,19 @@ void cut_coplanar_faces(const std::vector<std::size_t>& group,
     for (const Epeck_segment& s : cut->second.segments)
       cdt.insert_constraint(s.source(), s.target());
   }
-  const auto orientation = Projection().orientation_2_object();
+  // Sorted: CGAL's faces come in an order that depends on memory addresses (the constraint
+  // hierarchy orders its polylines by address), and the points are indexed in this order.
+  std::vector<std::array<Epeck_point, 3>> triangles;
   for (auto fh : cdt.finite_face_handles()) {
-    const Epeck_point &a = fh->vertex(0)->point(), &b = fh->vertex(1)->point(),
-                      &c = fh->vertex(2)->point();
+    std::array<Epeck_point, 3> t{fh->vertex(0)->point(), fh->vertex(1)->point(),
+                                 fh->vertex(2)->point()};
+    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+    triangles.push_back(t);
+  }
+  std::sort(triangles.begin(), triangles.end());
+  const auto orientation = Projection().orientation_2_object();
+  for (const auto& t_abc : triangles) {
+    const Epeck_point &a = t_abc[0], &b = t_abc[1], &c = t_abc[2];
     const Epeck_point centroid = CGAL::centroid(a, b, c);
     const Index_triangle ccw{index(a), index(b), index(c)};
     for (std::size_t f : group) {

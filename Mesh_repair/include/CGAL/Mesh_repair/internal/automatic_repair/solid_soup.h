@@ -13,6 +13,7 @@
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/boost/graph/helpers.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -49,20 +50,28 @@ inline std::string to_solid(const Triangle_soup& soup, Core_mesh& mesh) {
 
 /// `mesh` as a soup; where the surface touches itself at a vertex (two fans of faces around one
 /// vertex, which corefinement can leave), each fan gets a point of its own, so that the soup can
-/// be rebuilt face by face.
+/// be rebuilt face by face. Points and triangles are sorted (each triangle from its smallest
+/// index): CGAL's corefinement and autorefinement number their output in an order that depends
+/// on memory addresses, and the rebuilt part would otherwise differ from run to run.
 inline void to_soup(Core_mesh& mesh, Triangle_soup& soup) {
   CGAL::Polygon_mesh_processing::duplicate_non_manifold_vertices(mesh);
   soup = Triangle_soup();
+  std::vector<Core_mesh::Vertex_index> by_point(mesh.vertices().begin(), mesh.vertices().end());
+  std::stable_sort(by_point.begin(), by_point.end(),
+                   [&](auto a, auto b) { return mesh.point(a) < mesh.point(b); });
   std::vector<std::size_t> index(mesh.number_of_vertices() + mesh.number_of_removed_vertices());
-  for (auto v : mesh.vertices()) {
+  for (auto v : by_point) {
     index[v] = soup.points.size();
     soup.points.push_back(mesh.point(v));
   }
   for (auto f : mesh.faces()) {
     std::vector<std::size_t> triangle;
     for (auto v : vertices_around_face(mesh.halfedge(f), mesh)) triangle.push_back(index[v]);
+    std::rotate(triangle.begin(), std::min_element(triangle.begin(), triangle.end()),
+                triangle.end());
     soup.polygons.push_back(std::move(triangle));
   }
+  std::sort(soup.polygons.begin(), soup.polygons.end());
 }
 
 }  // namespace solid_union

@@ -19,12 +19,12 @@
 // the surface's farthest point on that side, and the base is triangulated the same way: the
 // plinth a user printing the model would add by hand.
 
+#include <CGAL/Mesh_repair/internal/face_triangulation.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/border_cycles.h>
 #include <CGAL/Mesh_repair/internal/polygon_projection.h>
 #include <CGAL/Mesh_repair/internal/vec3.h>
 
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
-#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/iterator.h>
 
@@ -35,16 +35,6 @@
 namespace CGAL {
 namespace Mesh_repair {
 namespace internal {
-
-/// Collects the faces `triangulate_face` creates (the visitor is copied: it holds a pointer).
-template <class PolygonMesh>
-struct Subface_collector {
-  using face_descriptor = typename boost::graph_traits<PolygonMesh>::face_descriptor;
-  std::vector<face_descriptor>* faces;
-  void before_subface_creations(face_descriptor) {}
-  void after_subface_created(face_descriptor f) { faces->push_back(f); }
-  void after_subface_creations() {}
-};
 
 /// Closes the hole of the border halfedge `h` with the constrained Delaunay triangulation of
 /// its border projected along the border's normal (the hole made one face, then CGAL's
@@ -68,13 +58,10 @@ std::string triangulate_projected_border(
     CGAL::Euler::remove_face(h, pm);
     return "the border seen along its normal is not a simple polygon";
   }
-  std::vector<typename boost::graph_traits<PolygonMesh>::face_descriptor> created;
-  if (!PMP::triangulate_face(f, pm, np.visitor(Subface_collector<PolygonMesh>{&created}))) {
+  if (!triangulate_face_in_fixed_order(f, pm, vpm, traits, faces)) {
     CGAL::Euler::remove_face(h, pm);
     return "no constrained Delaunay triangulation of the projected border";
   }
-  if (created.empty()) created.push_back(f);  // a triangle already: nothing to split
-  faces.insert(faces.end(), created.begin(), created.end());
   return {};
 }
 
