@@ -4,11 +4,14 @@
 # open, interpenetrating, polygons), the dirty STL files of openscad-testing-data and the OBJ
 # models of minetest-data. MODELS=more: every OFF/OBJ/STL/PLY file of geomview and
 # assimp-testmodels (format variants, invalid files, game and Blender models) and of cura and
-# prusa-slicer (printer beds and parts: CAD STLs and OBJs). Downloads the packages with
+# prusa-slicer (printer beds and parts: CAD STLs and OBJs). MODELS=science: the OBJ shape models
+# of stellarium-data (asteroids and moons from spacecraft images, test scenes, a scanned
+# observatory garden of 71,000 faces), the STL meshes of gmsh-doc (a scanned aneurysm, terrain,
+# CAD parts; gzipped), netgen and freecad-common. Downloads the packages with
 # `apt-get download` (no install) into .cache/debian-models, runs `mesh_repair repair --batch`
 # on the files and prints the count of each outcome, the total time and the slowest files. Extra
 # arguments go to `repair` (e.g. --merge-intersecting-solids).
-# Usage: [MODELS=more] scripts/bench_debian_models.sh [repair options]
+# Usage: [MODELS=more|science] scripts/bench_debian_models.sh [repair options]
 # MESH_REPAIR (default build/bin/mesh_repair), SAMPLE (default 60 furniture files), JOBS (2).
 set -eu
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
@@ -21,7 +24,8 @@ MODELS=${MODELS:-furniture}
 case $MODELS in
   furniture) PACKAGES="sweethome3d-furniture openscad-testing-data minetest-data" ;;
   more) PACKAGES="geomview assimp-testmodels cura prusa-slicer" ;;
-  *) echo "MODELS must be furniture or more, not $MODELS" >&2; exit 2 ;;
+  science) PACKAGES="stellarium-data gmsh-doc netgen freecad-common" ;;
+  *) echo "MODELS must be furniture, more or science, not $MODELS" >&2; exit 2 ;;
 esac
 for package in $PACKAGES; do
   if ! ls "$CACHE/debs/${package}_"*.deb >/dev/null 2>&1; then
@@ -35,8 +39,18 @@ WORK=$(mktemp -d "${TMPDIR:-/tmp}/mesh_repair_debian.XXXXXX")
 trap 'rm -rf "$WORK"' EXIT INT TERM
 mkdir -p "$WORK/in" "$WORK/out"
 python3 - "$CACHE/extracted" "$WORK/in" "$SAMPLE" "$MODELS" <<'EOF'
-import glob, os, random, shutil, sys, zipfile
+import glob, gzip, os, random, shutil, sys, zipfile
 extracted, out, sample = sys.argv[1], sys.argv[2], int(sys.argv[3])
+if sys.argv[4] == "science":
+    for package in ("stellarium-data", "gmsh-doc", "netgen", "freecad-common"):
+        for p in sorted(glob.glob("%s/%s/usr/share/**/*" % (extracted, package), recursive=True)):
+            name = os.path.basename(p)
+            plain = name[:-3] if name.lower().endswith(".gz") else name
+            if os.path.isfile(p) and plain.lower().rsplit(".", 1)[-1] in ("off", "obj", "stl", "ply"):
+                with (gzip.open(p) if plain != name else open(p, "rb")) as f, \
+                        open(out + "/" + plain, "wb") as g:
+                    g.write(f.read())
+    sys.exit(0)
 if sys.argv[4] == "more":
     for package in ("geomview", "assimp-testmodels", "cura", "prusa-slicer"):
         root = "%s/%s/usr/share/" % (extracted, package)

@@ -25,6 +25,7 @@
 #include <iterator>
 #include <set>
 #include <sstream>
+#include <thread>
 
 namespace {
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -1022,6 +1023,46 @@ TEST(FillHoles, LiepaTriangulationStageAddsOnlyTheBorderTriangles) {
   EXPECT_EQ(patch.vertices.size(), 0u);
   EXPECT_EQ(patch.faces.size(), n - 2);
   EXPECT_TRUE(closed_valid_and_clean(mesh));
+}
+
+// CGAL's triangulation of a hole is remembered per thread (remembered_triangulation.h): the
+// next fill of the same hole, entered at the same halfedge, takes it from memory, and must build
+// the very faces and halfedges that a search of its own builds (here: in a thread whose memory
+// is empty).
+TEST(FillHoles, ARememberedLiepaTriangulationBuildsTheSameMeshAsAFreshSearch) {
+  const Mesh input = sphere_with_hole(0.5);
+  const auto fill = [](Mesh& mesh) {
+    const std::vector<Mesh::Halfedge_index> borders = support::boundary_cycles(mesh);
+    MR::Fill_patch<Mesh> patch;
+    return MR::internal::fill_hole_liepa(mesh, get(CGAL::vertex_point, mesh), Kernel(),
+                                         borders.at(0), patch, MR::Liepa_options());
+  };
+  MR::internal::Hole_triangulation_key<Point> key;
+  std::vector<Mesh::Halfedge_index> sides;
+  ASSERT_TRUE(MR::internal::hole_triangulation_key(input, support::boundary_cycles(input).at(0),
+                                                   get(CGAL::vertex_point, input), key, sides));
+  ASSERT_GE(sides.size(), MR::internal::min_remembered_border_edges);
+
+  Mesh fresh = input;
+  bool fresh_filled = false, remembered_in_thread = false;
+  std::thread([&] {
+    fresh_filled = fill(fresh).filled;
+    remembered_in_thread =
+        MR::internal::remembered_triangulations_of_this_thread<Point>().find(key) != nullptr;
+  }).join();
+  EXPECT_TRUE(fresh_filled);
+  EXPECT_TRUE(remembered_in_thread);
+
+  const auto& memory = MR::internal::remembered_triangulations_of_this_thread<Point>();
+  Mesh first = input, second = input;
+  EXPECT_TRUE(fill(first).filled);
+  ASSERT_NE(memory.find(key), nullptr);
+  const std::size_t entries = memory.entries.size();
+  EXPECT_TRUE(fill(second).filled);
+  EXPECT_EQ(memory.entries.size(), entries);  // taken from memory, not searched again
+  EXPECT_TRUE(elements(first) == elements(fresh));
+  EXPECT_TRUE(elements(second) == elements(fresh));
+  EXPECT_TRUE(closed_valid_and_clean(second));
 }
 
 // The mouth of a paraboloid bowl over a square: a saddle-shaped border of 1,004 edges, above

@@ -13,6 +13,7 @@
 #include <CGAL/Mesh_repair/hole_filling/fill_result.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/cubic_search_limit.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/projected_triangulation.h>
+#include <CGAL/Mesh_repair/internal/hole_filling/remembered_triangulation.h>
 #include <CGAL/Mesh_repair/parameters.h>
 
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
@@ -27,22 +28,24 @@ namespace Mesh_repair {
 
 namespace internal {
 
-/// CGAL's stages of Liepa's method up to `last_stage`; `faired` false when the fairing failed.
-template <class PolygonMesh, class NamedParameters>
+/// CGAL's stages of Liepa's method up to `last_stage` (`triangulate_refine_and_fair_hole` and
+/// its shorter forms), the triangulation remembered per thread
+/// (remembered_triangulation.h); `faired` false when the fairing failed.
+template <class PolygonMesh, class VertexPointMap, class NamedParameters>
 void triangulate_liepa(PolygonMesh& pm,
                        typename boost::graph_traits<PolygonMesh>::halfedge_descriptor border,
+                       VertexPointMap vpm, bool exhaustive_search_allowed,
                        Fill_patch<PolygonMesh>& patch, Liepa_stage last_stage,
                        const NamedParameters& np, bool& faired) {
   namespace PMP = CGAL::Polygon_mesh_processing;
-  if (last_stage == Liepa_stage::triangulate) {
-    PMP::triangulate_hole(pm, border, std::back_inserter(patch.faces), np);
-  } else if (last_stage == Liepa_stage::refine) {
-    PMP::triangulate_and_refine_hole(pm, border, std::back_inserter(patch.faces),
-                                     std::back_inserter(patch.vertices), np);
-  } else {
-    faired = std::get<0>(PMP::triangulate_refine_and_fair_hole(
-        pm, border, std::back_inserter(patch.faces), std::back_inserter(patch.vertices), np));
-  }
+  std::vector<typename boost::graph_traits<PolygonMesh>::face_descriptor> triangles;
+  triangulate_hole_remembered(pm, border, vpm, exhaustive_search_allowed, triangles, np);
+  patch.faces.insert(patch.faces.end(), triangles.begin(), triangles.end());
+  if (last_stage == Liepa_stage::triangulate || triangles.empty()) return;
+  std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor> refined;
+  PMP::refine(pm, triangles, std::back_inserter(patch.faces), std::back_inserter(refined), np);
+  if (last_stage == Liepa_stage::fair) faired = PMP::fair(pm, refined, np);
+  patch.vertices.insert(patch.vertices.end(), refined.begin(), refined.end());
 }
 
 /// `fill_hole_liepa` on plain options; `vpm` and `traits` as read by the public function.
@@ -93,7 +96,7 @@ Hole_fill_report fill_hole_liepa(
     patch.vertices.insert(patch.vertices.end(), refined.begin(), refined.end());
   } else {
     try {
-      triangulate_liepa(pm, border_halfedge, patch, options.last_stage, np, faired);
+      triangulate_liepa(pm, border_halfedge, vpm, !bounded, patch, options.last_stage, np, faired);
     } catch (const Cubic_search_too_large&) {
       report.failure = "CGAL's triangulation needs an exhaustive search over more than " +
                        std::to_string(max_cubic_search_edges) +

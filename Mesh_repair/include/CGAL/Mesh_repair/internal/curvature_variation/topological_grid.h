@@ -12,6 +12,7 @@
 #include <CGAL/Mesh_repair/internal/core_inline.h>
 #include <CGAL/Mesh_repair/hole_filling/fill_result.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/cubic_search_limit.h>
+#include <CGAL/Mesh_repair/internal/hole_filling/remembered_triangulation.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
@@ -154,12 +155,18 @@ bool fill_with_refined_liepa(PolygonMesh& pm,
   if (!failure.empty()) return false;
   Cubic_search_limit limit;
   try {
-    PMP::triangulate_and_refine_hole(
-        pm, border, std::back_inserter(patch.faces), std::back_inserter(patch.vertices),
-        CGAL::parameters::vertex_point_map(vpm)
-            .density_control_factor(density_control_factor)
-            .do_not_use_cubic_algorithm(corners.size() > max_cubic_search_edges)
-            .visitor(limit));
+    const bool exhaustive_search_allowed = corners.size() <= max_cubic_search_edges;
+    const auto np = CGAL::parameters::vertex_point_map(vpm)
+                        .density_control_factor(density_control_factor)
+                        .do_not_use_cubic_algorithm(!exhaustive_search_allowed)
+                        .visitor(limit);
+    // CGAL's triangulate_and_refine_hole, with the triangulation remembered per thread (Liepa's
+    // fills of the same hole ask for it too).
+    std::vector<typename boost::graph_traits<PolygonMesh>::face_descriptor> triangles;
+    triangulate_hole_remembered(pm, border, vpm, exhaustive_search_allowed, triangles, np);
+    patch.faces.insert(patch.faces.end(), triangles.begin(), triangles.end());
+    PMP::refine(pm, triangles, std::back_inserter(patch.faces), std::back_inserter(patch.vertices),
+                np);
   } catch (const Cubic_search_too_large&) {
     failure = "CGAL's triangulation needs an exhaustive search over more than " +
               std::to_string(max_cubic_search_edges) + " border vertices (O(n^3)); not run";
