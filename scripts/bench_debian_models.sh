@@ -7,7 +7,7 @@
 # prusa-slicer (printer beds and parts: CAD STLs and OBJs). MODELS=science: the OBJ shape models
 # of stellarium-data (asteroids and moons from spacecraft images, test scenes, a scanned
 # observatory garden of 71,000 faces), the STL meshes of gmsh-doc (a scanned aneurysm, terrain,
-# CAD parts; gzipped), netgen and freecad-common. Downloads the packages with
+# CAD parts; gzipped), netgen-doc and freecad-common. Downloads the packages with
 # `apt-get download` (no install) into .cache/debian-models, runs `mesh_repair repair --batch`
 # on the files and prints the count of each outcome, the total time and the slowest files. Extra
 # arguments go to `repair` (e.g. --merge-intersecting-solids).
@@ -24,7 +24,7 @@ MODELS=${MODELS:-furniture}
 case $MODELS in
   furniture) PACKAGES="sweethome3d-furniture openscad-testing-data minetest-data" ;;
   more) PACKAGES="geomview assimp-testmodels cura prusa-slicer" ;;
-  science) PACKAGES="stellarium-data gmsh-doc netgen freecad-common" ;;
+  science) PACKAGES="stellarium-data gmsh-doc netgen-doc freecad-common" ;;
   *) echo "MODELS must be furniture, more or science, not $MODELS" >&2; exit 2 ;;
 esac
 for package in $PACKAGES; do
@@ -42,7 +42,7 @@ python3 - "$CACHE/extracted" "$WORK/in" "$SAMPLE" "$MODELS" <<'EOF'
 import glob, gzip, os, random, shutil, sys, zipfile
 extracted, out, sample = sys.argv[1], sys.argv[2], int(sys.argv[3])
 if sys.argv[4] == "science":
-    for package in ("stellarium-data", "gmsh-doc", "netgen", "freecad-common"):
+    for package in ("stellarium-data", "gmsh-doc", "netgen-doc", "freecad-common"):
         for p in sorted(glob.glob("%s/%s/usr/share/**/*" % (extracted, package), recursive=True)):
             name = os.path.basename(p)
             plain = name[:-3] if name.lower().endswith(".gz") else name
