@@ -49,8 +49,8 @@ constexpr std::size_t min_remembered_border_edges = 24;
 /// scene from one step of `automatic_repair` to the next.
 constexpr std::size_t remembered_triangulation_bytes = std::size_t(64) << 20;
 
-/// Everything CGAL's search for one hole reads (Triangulate_hole_polygon_mesh.h), from the
-/// border's smallest point.
+/// Everything CGAL's search for one hole reads (Triangulate_hole_polygon_mesh.h), in the order
+/// of the border from the halfedge it is given.
 template <class Point>
 struct Hole_triangulation_key {
   std::vector<Point> border;                // target of each border halfedge
