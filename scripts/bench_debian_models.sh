@@ -7,11 +7,13 @@
 # prusa-slicer (printer beds and parts: CAD STLs and OBJs). MODELS=science: the OBJ shape models
 # of stellarium-data (asteroids and moons from spacecraft images, test scenes, a scanned
 # observatory garden of 71,000 faces), the STL meshes of gmsh-doc (a scanned aneurysm, terrain,
-# CAD parts; gzipped), netgen-doc and freecad-common. Downloads the packages with
+# CAD parts; gzipped), netgen-doc and freecad-common. MODELS=cfd: the surfaces of the OpenFOAM
+# tutorials (openfoam-examples: snappyHexMesh's motorBike and other multi-part CAD models,
+# terrain, ducts, baffles and region interfaces; gzipped, duplicates dropped). Downloads the packages with
 # `apt-get download` (no install) into .cache/debian-models, runs `mesh_repair repair --batch`
 # on the files and prints the count of each outcome, the total time and the slowest files. Extra
 # arguments go to `repair` (e.g. --merge-intersecting-solids).
-# Usage: [MODELS=more|science] scripts/bench_debian_models.sh [repair options]
+# Usage: [MODELS=more|science|cfd] scripts/bench_debian_models.sh [repair options]
 # MESH_REPAIR (default build/bin/mesh_repair), SAMPLE (default 60 furniture files), JOBS (2).
 set -eu
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
@@ -25,7 +27,8 @@ case $MODELS in
   furniture) PACKAGES="sweethome3d-furniture openscad-testing-data minetest-data" ;;
   more) PACKAGES="geomview assimp-testmodels cura prusa-slicer" ;;
   science) PACKAGES="stellarium-data gmsh-doc netgen-doc freecad-common" ;;
-  *) echo "MODELS must be furniture, more or science, not $MODELS" >&2; exit 2 ;;
+  cfd) PACKAGES="openfoam-examples" ;;
+  *) echo "MODELS must be furniture, more, science or cfd, not $MODELS" >&2; exit 2 ;;
 esac
 for package in $PACKAGES; do
   if ! ls "$CACHE/debs/${package}_"*.deb >/dev/null 2>&1; then
@@ -39,8 +42,27 @@ WORK=$(mktemp -d "${TMPDIR:-/tmp}/mesh_repair_debian.XXXXXX")
 trap 'rm -rf "$WORK"' EXIT INT TERM
 mkdir -p "$WORK/in" "$WORK/out"
 python3 - "$CACHE/extracted" "$WORK/in" "$SAMPLE" "$MODELS" <<'EOF'
-import glob, gzip, os, random, shutil, sys, zipfile
+import glob, gzip, hashlib, os, random, shutil, sys, zipfile
 extracted, out, sample = sys.argv[1], sys.argv[2], int(sys.argv[3])
+if sys.argv[4] == "cfd":
+    # The tutorials share surfaces: each content is run once, named by its tutorial.
+    root = extracted + "/openfoam-examples/usr/share/doc/openfoam-examples/examples/"
+    seen = set()
+    for p in sorted(glob.glob(root + "**/*", recursive=True)):
+        name = os.path.basename(p)
+        plain = name[:-3] if name.lower().endswith(".gz") else name
+        if not os.path.isfile(p) or plain.lower().rsplit(".", 1)[-1] not in ("off", "obj", "stl", "ply"):
+            continue
+        with (gzip.open(p) if plain != name else open(p, "rb")) as f:
+            data = f.read()
+        digest = hashlib.sha1(data).hexdigest()
+        if digest in seen:
+            continue
+        seen.add(digest)
+        parts = p[len(root):].split("/")
+        with open("%s/%s_%s" % (out, parts[2] if len(parts) > 3 else parts[0], plain), "wb") as g:
+            g.write(data)
+    sys.exit(0)
 if sys.argv[4] == "science":
     for package in ("stellarium-data", "gmsh-doc", "netgen-doc", "freecad-common"):
         for p in sorted(glob.glob("%s/%s/usr/share/**/*" % (extracted, package), recursive=True)):

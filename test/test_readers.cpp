@@ -227,6 +227,12 @@ TEST(Readers, MoreMalformedHeadersAndRecords) {
       {"c.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 9\nf 1 2 3\n",
        "line 5: a face refers to vertex 9 but the file has 3 vertices"},
       {"d.obj", "v 0 0 0\n3.5 2\n", "line 2: not an OBJ statement: '3.5'"},
+      {"polyline.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nl 1 2 3\n",
+       "contains no faces (no face with three or more vertices), only 3 points and 1 line "
+       "statement(s) (`l`): curves, not a surface"},
+      {"segments.off", "OFF\n3 2\n0 0 0\n1 0 0\n1 1 0\n2 0 1\n2 1 2\n",
+       "only 3 points and 2 face(s) of one or two vertices: points and segments, not a surface"},
+      {"points.obj", "v 0 0 0\nv 1 0 0\n", "only 2 points: a point cloud"},
       {"a.stl",
        "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nendloop\nendfacet\n"
        "facet\n",

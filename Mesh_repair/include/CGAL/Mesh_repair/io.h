@@ -85,7 +85,9 @@ std::string read_polygon_soup_from_memory(const char* data, std::size_t size,
       internal::readers::read_soup(in, format, name, soup.points, soup.polygons, counts);
   soup.short_polygons_skipped = counts.short_polygons;
   soup.header_lines_skipped = counts.header_lines_skipped;
-  if (error.empty()) error = internal::validate_soup(name, soup.points, soup.polygons);
+  if (error.empty())
+    error = internal::validate_soup(name, soup.points, soup.polygons, counts.line_statements,
+                                    counts.short_polygons);
   if (!error.empty()) soup.points.clear(), soup.polygons.clear();  // nothing half-read
   return error;
 }
@@ -134,7 +136,9 @@ std::string read_polygon_soup(const std::string& filename, Polygon_soup<Point>& 
   });
   soup.short_polygons_skipped = counts.short_polygons;
   soup.header_lines_skipped = counts.header_lines_skipped;
-  if (error.empty()) error = internal::validate_soup(filename, soup.points, soup.polygons);
+  if (error.empty())
+    error = internal::validate_soup(filename, soup.points, soup.polygons, counts.line_statements,
+                                    counts.short_polygons);
   if (!error.empty()) soup.points.clear(), soup.polygons.clear();  // nothing half-read
   return error;
 }

@@ -123,15 +123,30 @@ std::string validate_points(const std::string& filename, const std::vector<Point
   return {};
 }
 
+/// What a file without faces holds, for its message: lines (OBJ `l`), faces of fewer than
+/// three vertices, or points only.
+inline std::string what_a_faceless_file_holds(std::size_t points, std::size_t line_statements,
+                                              std::size_t short_polygons) {
+  std::string held = "only " + std::to_string(points) + " points";
+  if (line_statements > 0)
+    return held + " and " + std::to_string(line_statements) +
+           " line statement(s) (`l`): curves, not a surface";
+  if (short_polygons > 0)
+    return held + " and " + std::to_string(short_polygons) +
+           " face(s) of one or two vertices: points and segments, not a surface";
+  return held + ": a point cloud (`mesh_repair mesh-points` meshes one)";
+}
+
 /// After reading: every coordinate finite and at most `max_coordinate_magnitude`, every index in
-/// range, at least one face.
+/// range, at least one face. `line_statements` and `short_polygons` (skipped by the reader) say
+/// what a file without faces holds.
 template <class Point>
 std::string validate_soup(const std::string& filename, const std::vector<Point>& points,
-                          const std::vector<std::vector<std::size_t>>& polygons) {
+                          const std::vector<std::vector<std::size_t>>& polygons,
+                          std::size_t line_statements = 0, std::size_t short_polygons = 0) {
   if (polygons.empty() && !points.empty())
-    return filename + ": contains no faces (no face with three or more vertices), only " +
-           std::to_string(points.size()) +
-           " points: a point cloud (`mesh_repair mesh-points` meshes one)";
+    return filename + ": contains no faces (no face with three or more vertices), " +
+           what_a_faceless_file_holds(points.size(), line_statements, short_polygons);
   if (polygons.empty())
     return filename + ": contains no faces (no face with three or more vertices)";
   if (points.empty()) return filename + ": contains no vertices";

@@ -329,6 +329,8 @@ inline std::string utf16_to_utf8(Byte_reader& in) {
 
 struct Read_counts {
   std::size_t short_polygons = 0;
+  /// OBJ line statements (`l`), skipped: a file of curves only is no surface, and says so.
+  std::size_t line_statements = 0;
   /// PLY header lines of no known keyword (old Blender exporters wrote "Created by ..."
   /// without `comment`), skipped.
   std::size_t header_lines_skipped = 0;

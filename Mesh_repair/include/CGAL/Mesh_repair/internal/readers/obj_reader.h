@@ -99,6 +99,8 @@ void read_obj(Byte_reader& in, std::vector<Point>& points,
         ++counts.short_polygons;
       else
         polygons.push_back(polygon);
+    } else if (keyword == "l") {
+      ++counts.line_statements;
     } else if (!obj_keyword(keyword)) {
       fail_at_line(at, "not an OBJ statement: " + quoted(keyword));
     }
