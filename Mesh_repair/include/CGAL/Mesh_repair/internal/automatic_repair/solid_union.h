@@ -24,10 +24,10 @@ namespace internal {
 /// A part of a mesh as triangles of the core's points.
 using Triangle_soup = Polygon_soup<Core_traits::Point_3>;
 
-/// Writes into `out` the union of `solids` (at least two), computed one solid at a time with
-/// CGAL's `corefine_and_compute_union`. Each solid must be a closed, valid triangle mesh free of
-/// self-intersections that bounds a volume. Returns an empty string on success, else why the
-/// union was not computed (then `out` is unspecified).
+/// Writes into `out` the union of `solids` (at least two), computed in pairs, then pairs of
+/// their unions, and so on, with CGAL's `corefine_and_compute_union`. Each solid must be a closed,
+/// valid triangle mesh free of self-intersections that bounds a volume. Returns an empty string on
+/// success, else why the union was not computed (then `out` is unspecified).
 CGAL_MESH_REPAIR_CORE_INLINE std::string union_of_solids(const std::vector<Triangle_soup>& solids,
                                                          Triangle_soup& out);
 

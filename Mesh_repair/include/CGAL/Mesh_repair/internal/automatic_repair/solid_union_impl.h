@@ -28,23 +28,29 @@ CGAL_MESH_REPAIR_CORE_INLINE std::string union_of_solids(const std::vector<Trian
                                                          Triangle_soup& out) {
   namespace PMP = CGAL::Polygon_mesh_processing;
   if (solids.size() < 2) return "fewer than two parts";
-  Core_mesh merged;
-  std::string why = solid_union::to_solid(solids[0], merged);
-  if (!why.empty()) return why;
-  for (std::size_t i = 1; i < solids.size(); ++i) {
-    Core_mesh next, result;
-    why = solid_union::to_solid(solids[i], next);
+  std::vector<Core_mesh> level(solids.size());
+  for (std::size_t i = 0; i < solids.size(); ++i) {
+    const std::string why = solid_union::to_solid(solids[i], level[i]);
     if (!why.empty()) return why;
-    try {
-      if (!PMP::corefine_and_compute_union(merged, next, result))
-        return "CGAL's corefinement could not compute the union (its result would not be "
-               "manifold)";
-    } catch (const std::exception& e) {
-      return std::string("CGAL's corefinement failed: ") + e.what();
-    }
-    merged = std::move(result);
   }
-  solid_union::to_soup(merged, out);
+  // Pairwise, level by level: each corefinement reads both of its operands whole, so adding the
+  // parts one at a time to a growing union is quadratic in their number (400 intersecting
+  // spheres: 19.9 s, against 0.93 s for 100).
+  while (level.size() > 1) {
+    std::vector<Core_mesh> next((level.size() + 1) / 2);
+    for (std::size_t i = 0; i + 1 < level.size(); i += 2) {
+      try {
+        if (!PMP::corefine_and_compute_union(level[i], level[i + 1], next[i / 2]))
+          return "CGAL's corefinement could not compute the union (its result would not be "
+                 "manifold)";
+      } catch (const std::exception& e) {
+        return std::string("CGAL's corefinement failed: ") + e.what();
+      }
+    }
+    if (level.size() % 2 == 1) next.back() = std::move(level.back());
+    level = std::move(next);
+  }
+  solid_union::to_soup(level.front(), out);
   return {};
 }
 
