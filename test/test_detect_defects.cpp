@@ -13,6 +13,7 @@
 
 #include "support/cgal_calls.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
@@ -374,6 +375,40 @@ TEST(DetectDefects, PatchInsideAHoleIsAnIslandOfThatHole) {
     if (cycle.island_of < 0) continue;
     EXPECT_EQ(cycle.edges, 4u);                                               // the island
     EXPECT_EQ(report.border_cycles[std::size_t(cycle.island_of)].edges, 8u);  // the hole
+  }
+}
+
+// A 12 x 12 grid with three 2 x 2 holes, a patch floating in two of them, a patch above the
+// third (farther from its plane than the hole is wide) and 400 patches far from the grid: each
+// patch border is an island cycle, and only the two inside a hole are that hole's islands.
+TEST(DetectDefects, IslandsAmongHundredsOfSeparatePatchesGoToTheHoleAroundThem) {
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t>> faces;
+  add_grid(points, faces, 0, 0, 1, 12);
+  const std::vector<std::pair<int, int>> hole_corners = {{2, 2}, {7, 3}, {4, 8}};
+  std::vector<std::vector<std::size_t>> kept;
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    const int cell = int(f / 2), i = cell % 12, j = cell / 12;
+    const bool in_hole = std::any_of(hole_corners.begin(), hole_corners.end(), [&](auto c) {
+      return i >= c.first && i < c.first + 2 && j >= c.second && j < c.second + 2;
+    });
+    if (!in_hole) kept.push_back(faces[f]);
+  }
+  add_grid(points, kept, 2.5, 2.5, 1, 1);
+  add_grid(points, kept, 7.5, 3.5, 1, 1);
+  const std::size_t above = points.size();
+  add_grid(points, kept, 4.5, 8.5, 1, 1);
+  for (std::size_t v = above; v < points.size(); ++v)
+    points[v] = Point(points[v].x(), points[v].y(), 5.0);
+  for (int k = 0; k < 400; ++k) add_grid(points, kept, 100 + 2 * (k % 20), 2 * (k / 20), 1, 1);
+  const auto report =
+      MR::detect_defects(mesh_from(points, kept), MR::parameters::detect_self_intersections(false));
+  ASSERT_EQ(report.border_cycles.size(), 1u + 3u + 3u + 400u);
+  EXPECT_EQ(counts_of(report).ring_hole_islands, 2u);
+  for (const auto& cycle : report.border_cycles) {
+    if (cycle.island_of < 0) continue;
+    EXPECT_EQ(cycle.edges, 4u);
+    EXPECT_EQ(report.border_cycles[std::size_t(cycle.island_of)].edges, 8u);
   }
 }
 

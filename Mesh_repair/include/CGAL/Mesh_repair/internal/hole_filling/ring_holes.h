@@ -12,7 +12,9 @@
 #include <CGAL/Mesh_repair/hole_filling/fill_result.h>
 #include <CGAL/Mesh_repair/internal/hole_filling/border_cycles.h>
 
+#include <CGAL/Box_intersection_d/Box_with_info_d.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/box_intersection_d.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 
 #include <algorithm>
@@ -83,6 +85,35 @@ inline double cosine(const Vec3& a, const Vec3& b) {
   return n > 0 ? dot(a, b) / n : 0.0;
 }
 
+/// For each island cycle, the hole cycles whose centroid lies within their diameter of the
+/// island's centroid (in each coordinate: a superset of the distance test), in increasing index
+/// order; empty for the other cycles. Box intersection: a mesh with thousands of holes and
+/// islands (a soup of separate faces, each an island) is not tested pair by pair.
+inline std::vector<std::vector<std::size_t>> holes_near_islands(
+    const std::vector<Border_cycle_geometry>& geometry, const std::vector<bool>& is_hole,
+    const std::vector<bool>& is_island) {
+  using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::size_t>;
+  std::vector<Box> hole_boxes, island_boxes;
+  for (std::size_t k = 0; k < geometry.size(); ++k) {
+    const Vec3& c = geometry[k].centroid;
+    // A hole's box is widened by a rounding margin: it must hold every island that the distance
+    // test below accepts.
+    const double magnitude = std::max({std::abs(c[0]), std::abs(c[1]), std::abs(c[2])});
+    const double r =
+        is_hole[k] ? geometry[k].diameter + 1e-9 * (geometry[k].diameter + magnitude) : 0.0;
+    double lo[3] = {c[0] - r, c[1] - r, c[2] - r}, hi[3] = {c[0] + r, c[1] + r, c[2] + r};
+    if (is_hole[k]) hole_boxes.emplace_back(lo, hi, k);
+    if (is_island[k]) island_boxes.emplace_back(lo, hi, k);
+  }
+  std::vector<std::vector<std::size_t>> candidates(geometry.size());
+  CGAL::box_intersection_d(island_boxes.begin(), island_boxes.end(), hole_boxes.begin(),
+                           hole_boxes.end(), [&](const Box& island, const Box& hole) {
+                             candidates[island.info()].push_back(hole.info());
+                           });
+  for (std::vector<std::size_t>& holes : candidates) std::sort(holes.begin(), holes.end());
+  return candidates;
+}
+
 /// The one ring-hole test (thesis 4.4), shared by `detect_defects` (which reports islands) and
 /// `fill_holes` (which bridges them): for each cycle of `cycles`, the index in `cycles` of the
 /// hole it is an island of, or -1.
@@ -111,12 +142,13 @@ std::vector<long> ring_hole_owners(
     is_hole[k] = turn > 0.5;
     is_island[k] = turn < -0.5;
   }
+  const std::vector<std::vector<std::size_t>> candidates =
+      holes_near_islands(geometry, is_hole, is_island);
   for (std::size_t island = 0; island < cycles.size(); ++island) {
-    if (!is_island[island]) continue;
+    if (candidates[island].empty()) continue;
     const std::vector<Vec3> island_points = cycle_points(cycles[island], pm, vpm);
     double best_area = std::numeric_limits<double>::max();
-    for (std::size_t hole = 0; hole < cycles.size(); ++hole) {
-      if (!is_hole[hole]) continue;
+    for (std::size_t hole : candidates[island]) {
       const Border_cycle_geometry& g = geometry[hole];
       const double area = norm(g.vector_area);
       if (area == 0 || area >= best_area) continue;
