@@ -14,12 +14,14 @@
 # on the files and prints the count of each outcome, the total time and the slowest files. Extra
 # arguments go to `repair` (e.g. --merge-intersecting-solids).
 # Usage: [MODELS=more|science|cfd] scripts/bench_debian_models.sh [repair options]
-# MESH_REPAIR (default build/bin/mesh_repair), SAMPLE (default 60 furniture files), JOBS (2).
+# MESH_REPAIR (default build/bin/mesh_repair), SAMPLE (default 60 furniture files), JOBS (2),
+# TIMEOUT (seconds per file, default 120; the science corpus's garden scenes need about 240).
 set -eu
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 TOOL=${MESH_REPAIR:-$ROOT/build/bin/mesh_repair}
 SAMPLE=${SAMPLE:-60}
 JOBS=${JOBS:-2}
+TIMEOUT=${TIMEOUT:-120}
 CACHE=$ROOT/.cache/debian-models
 mkdir -p "$CACHE/debs" "$CACHE/extracted"
 MODELS=${MODELS:-furniture}
@@ -96,7 +98,7 @@ for p in glob.glob(extracted + "/minetest-data/**/*.obj", recursive=True):
     shutil.copy(p, out + "/mt_" + os.path.basename(p))
 EOF
 start=$(date +%s.%N)
-"$TOOL" repair --batch "$WORK/in" --out-dir "$WORK/out" --jobs "$JOBS" --timeout 120 "$@" \
+"$TOOL" repair --batch "$WORK/in" --out-dir "$WORK/out" --jobs "$JOBS" --timeout "$TIMEOUT" "$@" \
   >"$WORK/batch.log" 2>&1 || true
 seconds=$(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { print b - a }')
 echo "files: $(ls "$WORK/in" | wc -l), wall time ${seconds} s (jobs $JOBS)"
