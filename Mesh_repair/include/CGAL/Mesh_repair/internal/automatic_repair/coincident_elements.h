@@ -282,8 +282,8 @@ bool rebuild_as_read(PolygonMesh& pm, VertexPointMap vpm) {
   PMP::orient_polygon_soup(points, polygons);
   if (!PMP::is_polygon_soup_a_polygon_mesh(polygons)) return false;
   // The elements are listed before any is removed: Surface_mesh's begin() skips the elements
-  // removed so far, so taking the first element again and again is quadratic (145 s of 194 on
-  // a 276,000-face model).
+  // removed so far, so taking the first element again and again would be quadratic
+  // (benchmarks.md, "OpenFOAM tutorials").
   using Traits = boost::graph_traits<PolygonMesh>;
   const std::vector<typename Traits::edge_descriptor> old_edges(edges(pm).begin(), edges(pm).end());
   const std::vector<typename Traits::face_descriptor> old_faces(faces(pm).begin(), faces(pm).end());

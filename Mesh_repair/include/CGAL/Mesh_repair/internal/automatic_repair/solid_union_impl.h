@@ -34,8 +34,8 @@ CGAL_MESH_REPAIR_CORE_INLINE std::string union_of_solids(const std::vector<Trian
     if (!why.empty()) return why;
   }
   // Pairwise, level by level: each corefinement reads both of its operands whole, so adding the
-  // parts one at a time to a growing union is quadratic in their number (400 intersecting
-  // spheres: 19.9 s, against 0.93 s for 100).
+  // parts one at a time to a growing union would be quadratic in their number (benchmarks.md,
+  // "Scaling").
   while (level.size() > 1) {
     std::vector<Core_mesh> next((level.size() + 1) / 2);
     for (std::size_t i = 0; i + 1 < level.size(); i += 2) {
