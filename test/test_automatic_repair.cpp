@@ -820,6 +820,30 @@ TEST(AutomaticRepair, IntersectingSolidsBecomeTheirUnionWhenAsked) {
   EXPECT_GT(step->count("faces_removed"), step->count("faces_added") * 0.5);
 }
 
+// Five unit balls in a row, each overlapping the next (1.2 apart) and no other: the group is
+// united in pairs and then pairs of unions, the fifth ball waiting a level, and the result is one
+// closed solid of volume 5 balls minus 4 lenses.
+TEST(AutomaticRepair, AnOddRowOfIntersectingSolidsBecomesOneSolid) {
+  Mesh mesh;
+  for (int k = 0; k < 5; ++k) MR::make_sphere(mesh, Point(1.2 * k, 0.05 * k, 0), 1.0, 3);
+  const double one = CGAL::Polygon_mesh_processing::volume(mesh) / 5;
+  const auto result = MR::automatic_repair(mesh, MR::parameters::merge_intersecting_solids(true));
+  EXPECT_EQ(result.status(), MR::Repair_status::complete)
+      << (result.remaining.empty() ? "" : result.remaining.front());
+  EXPECT_EQ(result.solids_merged, 5u);
+  EXPECT_EQ(self_intersection_count(mesh), 0u);
+  EXPECT_TRUE(CGAL::is_closed(mesh));
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  EXPECT_EQ(CGAL::Polygon_mesh_processing::connected_components(
+                mesh, mesh.add_property_map<Mesh::Face_index, std::size_t>("f:cc").first),
+            1u);
+  const double d = std::hypot(1.2, 0.05);
+  const double lens = std::acos(-1.0) * (4 + d) * (2 - d) * (2 - d) / 12;
+  const double ball = 4 * std::acos(-1.0) / 3;
+  const double expected = (5 * ball - 4 * lens) * one / ball;
+  EXPECT_NEAR(CGAL::Polygon_mesh_processing::volume(mesh), expected, 0.01 * expected);
+}
+
 // Two cubes of the same height, one shifted sideways into the other: their top and bottom faces
 // overlap in one plane, where CGAL 5.5's corefinement can crash (it did on a furniture model);
 // the parts are kept apart and the note says why.
