@@ -15,7 +15,8 @@
 # arguments go to `repair` (e.g. --merge-intersecting-solids).
 # Usage: [MODELS=more|science|cfd] scripts/bench_debian_models.sh [repair options]
 # MESH_REPAIR (default build/bin/mesh_repair), SAMPLE (default 60 furniture files), JOBS (2),
-# TIMEOUT (seconds per file, default 120; the science corpus's garden scenes need about 240).
+# TIMEOUT (seconds per file, default 120; the science corpus's garden scenes need about 240),
+# KEEP (a folder that receives the inputs, the repaired files, summary.csv and the reports).
 set -eu
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 TOOL=${MESH_REPAIR:-$ROOT/build/bin/mesh_repair}
@@ -41,7 +42,8 @@ for package in $PACKAGES; do
     dpkg -x "$CACHE/debs/${package}_"*.deb "$CACHE/extracted/$package"
 done
 WORK=$(mktemp -d "${TMPDIR:-/tmp}/mesh_repair_debian.XXXXXX")
-trap 'rm -rf "$WORK"' EXIT INT TERM
+KEEP=${KEEP:-}
+trap '[ -z "$KEEP" ] || { mkdir -p "$KEEP" && cp -r "$WORK"/. "$KEEP"/; }; rm -rf "$WORK"' EXIT INT TERM
 mkdir -p "$WORK/in" "$WORK/out"
 python3 - "$CACHE/extracted" "$WORK/in" "$SAMPLE" "$MODELS" <<'EOF'
 import glob, gzip, hashlib, os, random, shutil, sys, zipfile

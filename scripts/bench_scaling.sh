@@ -32,6 +32,6 @@ for row in "separate_faces:$N:" "intersecting_spheres:$((N / 25)):--merge-inters
   a=$(seconds "$WORK/a.off" -o "$WORK/a_out.off" $options)
   # shellcheck disable=SC2086
   b=$(seconds "$WORK/b.off" -o "$WORK/b_out.off" $options)
-  ratio=$(awk -v a="$a" -v b="$b" 'BEGIN { printf "%.1f", (a > 0 ? b / a : 0) }')
+  ratio=$(awk -v a="$a" -v b="$b" 'BEGIN { r = (a > 0) ? b / a : 0; printf "%.1f", r }')
   echo "| $kind | ${options:--} | $n | $a | $((4 * n)) | $b | $ratio |"
 done
