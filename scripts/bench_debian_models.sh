@@ -14,7 +14,8 @@
 # on the files and prints the count of each outcome, the total time and the slowest files. Extra
 # arguments go to `repair` (e.g. --merge-intersecting-solids).
 # Usage: [MODELS=more|science|cfd] scripts/bench_debian_models.sh [repair options]
-# MESH_REPAIR (default build/bin/mesh_repair), SAMPLE (default 60 furniture files), JOBS (2),
+# MESH_REPAIR (default build/bin/mesh_repair), SAMPLE (default 60 furniture files), SEED (of the
+# furniture draw, default 7; another seed draws models held out from the default sample), JOBS (2),
 # TIMEOUT (seconds per file, default 120; the science corpus's garden scenes need about 240),
 # KEEP (a folder that receives the inputs, the repaired files, summary.csv and the reports).
 set -eu
@@ -45,7 +46,7 @@ WORK=$(mktemp -d "${TMPDIR:-/tmp}/mesh_repair_debian.XXXXXX")
 KEEP=${KEEP:-}
 trap '[ -z "$KEEP" ] || { mkdir -p "$KEEP" && cp -r "$WORK"/. "$KEEP"/; }; rm -rf "$WORK"' EXIT INT TERM
 mkdir -p "$WORK/in" "$WORK/out"
-python3 - "$CACHE/extracted" "$WORK/in" "$SAMPLE" "$MODELS" <<'EOF'
+python3 - "$CACHE/extracted" "$WORK/in" "$SAMPLE" "$MODELS" "${SEED:-7}" <<'EOF'
 import glob, gzip, hashlib, os, random, shutil, sys, zipfile
 extracted, out, sample = sys.argv[1], sys.argv[2], int(sys.argv[3])
 if sys.argv[4] == "cfd":
@@ -88,7 +89,7 @@ objs = []
 for archive in sorted(glob.glob(extracted + "/sweethome3d-furniture/**/*.sh3f", recursive=True)):
     with zipfile.ZipFile(archive) as z:
         objs += [(archive, n) for n in sorted(z.namelist()) if n.lower().endswith(".obj")]
-random.seed(7)
+random.seed(int(sys.argv[5]))
 for i, (archive, name) in enumerate(random.sample(objs, min(sample, len(objs)))):
     with zipfile.ZipFile(archive) as z, open("%s/sh%02d_%s" % (out, i, os.path.basename(name).replace(" ", "_")), "wb") as f:
         f.write(z.read(name))

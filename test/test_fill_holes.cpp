@@ -820,6 +820,49 @@ TEST(FillHoles, SheetBorderRatioIsOneForAFlatSheetAndSmallForAHoleInASphere) {
               (1 - z * z) / (2 * (1 + z)), 0.02);
 }
 
+// A hole whose border runs out along a cut edge and back: the cut's two sides end at coincident
+// copies of the hole's corner. Welding the copies leaves a loop of two edges joining the same
+// two vertices, which no method can triangulate and `is_valid_polygon_mesh` rejects; it is
+// zipped into one edge with the rest of the hole filled.
+TEST(FillHoles, AHoleRunningAlongACutEdgeIsFilledAndTheCutZipped) {
+  Mesh mesh;
+  std::vector<Mesh::Vertex_index> grid;
+  for (int j = 0; j < 6; ++j)
+    for (int i = 0; i < 6; ++i) grid.push_back(mesh.add_vertex(Point(i, j, 0.05 * i * j)));
+  const auto corner_copy = mesh.add_vertex(mesh.point(grid[6 * 2 + 2]));
+  for (int j = 0; j < 5; ++j)
+    for (int i = 0; i < 5; ++i) {
+      if (i == 2 && j == 2) continue;  // the hole
+      // The cell right of the cut edge (2,1)-(2,2) takes the copy of the corner (2,2).
+      auto at = [&](int a, int b) {
+        return i == 2 && j == 1 && a == 2 && b == 2 ? corner_copy : grid[6 * b + a];
+      };
+      ASSERT_NE(mesh.add_face(at(i, j), at(i + 1, j), at(i + 1, j + 1)), Mesh::null_face());
+      ASSERT_NE(mesh.add_face(at(i, j), at(i + 1, j + 1), at(i, j + 1)), Mesh::null_face());
+    }
+  ASSERT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  ASSERT_EQ(count_border_cycles(mesh), 2u);  // the outline and the hole with the cut
+  const std::size_t vertices_before = mesh.number_of_vertices();
+  const Point below = mesh.point(grid[6 * 1 + 2]), corner = mesh.point(corner_copy);
+  const MR::Fill_result result = MR::fill_holes(mesh);
+  EXPECT_EQ(result.filled, 1u);
+  EXPECT_EQ(result.sheet_borders, 1u);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  EXPECT_EQ(count_border_cycles(mesh), 1u);
+  EXPECT_EQ(mesh.number_of_vertices(), vertices_before - 1);  // the copy welded away
+  // One interior edge is left where the cut was.
+  std::size_t cut_edges = 0;
+  for (auto e : edges(mesh)) {
+    const Point a = mesh.point(source(e, mesh)), b = mesh.point(target(e, mesh));
+    if ((a == below && b == corner) || (a == corner && b == below)) {
+      ++cut_edges;
+      EXPECT_FALSE(CGAL::is_border(e, mesh));
+    }
+  }
+  EXPECT_EQ(cut_edges, 1u);
+  EXPECT_FALSE(support::does_self_intersect(mesh));
+}
+
 TEST(FillHoles, TheOutlineOfAnOpenSheetIsLeftOpenAndItsHoleFilled) {
   Mesh mesh = bumpy_sheet(60);
   punch_hole(mesh, Point(0.2, -0.1, 0.1 * std::sin(0.6) * std::cos(-0.2)), 0.25);

@@ -425,12 +425,17 @@ class Hole_filler {
         hole_group.push_back(k);
       }
     }
+    // A hole that the welds turned into slits only is closed by zipping them, with no patch.
+    std::vector<bool> attempted(groups.size(), false);
+    std::vector<Hole_fill_report> combined(groups.size());
+    for (std::size_t k = 0; k < groups.size(); ++k)
+      if (!welds[k].empty() &&
+          std::find(hole_group.begin(), hole_group.end(), k) == hole_group.end())
+        attempted[k] = combined[k].filled = true;
     std::vector<Patch> method_patches(holes.size());
     const std::vector<Hole_fill_report> method_reports =
         fill_all_holes(method, pm_, vpm_, holes, method_patches, options_, visitor_);
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    std::vector<Hole_fill_report> combined(groups.size());
-    std::vector<bool> attempted(groups.size(), false);
     for (std::size_t j = 0; j < holes.size(); ++j) {
       const std::size_t k = hole_group[j];
       append(patches[k], method_patches[j]);
@@ -601,7 +606,7 @@ class Hole_filler {
                           Transaction& transaction, std::vector<Pinch_weld<PolygonMesh>>& welds,
                           bool self_checked = false, std::size_t bridge_faces = 0) {
     report.island_cycles = group.islands.size();
-    if (report.filled && patch.faces.empty()) {
+    if (report.filled && patch.faces.empty() && welds.empty()) {
       report.filled = false;
       report.failure = "the method created no face";
     }
@@ -634,9 +639,12 @@ class Hole_filler {
       near_faces_.keep(patch, transaction.moved_vertices());
     }
     if (report.filled && !welds.empty()) {
-      report.notes.push_back("welded " + std::to_string(welds.size()) +
-                             " pinch(es) where the border touched itself");
-      commit_pinches(pm_, welds);
+      const std::size_t pinches = welds.size();
+      const std::size_t zipped = commit_pinches(pm_, welds);
+      report.notes.push_back(
+          "welded " + std::to_string(pinches) + " pinch(es) where the border touched itself" +
+          (zipped > 0 ? ", zipped " + std::to_string(zipped) + " two-edge slit(s) into single edges"
+                      : std::string()));
     }
     report.faces_created = patch.faces.size();
     report.vertices_created = patch.vertices.size();

@@ -9,12 +9,17 @@
 // valid (any triangle across the waist is degenerate). Welding the two vertices back and
 // splitting the cycle at the weld gives two simple holes that every method can fill; once both
 // are filled the welded vertex is manifold again. The weld is undone when the fill is rolled back.
+// A loop of two edges between coincident vertices becomes, once welded, two edges joining the
+// same two vertices: a slit with no area that no method can triangulate, and that
+// `is_valid_polygon_mesh` rejects. It is not filled but zipped into one edge when the welds are
+// committed.
 
 #include <CGAL/Mesh_repair/internal/hole_filling/border_cycles.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
+#include <algorithm>
 #include <array>
 #include <map>
 #include <unordered_set>
@@ -45,9 +50,17 @@ bool in_same_cycle(typename boost::graph_traits<PolygonMesh>::halfedge_descripto
   return false;
 }
 
+/// Whether the border cycle of `h` is two edges between the same two vertices.
+template <class PolygonMesh>
+bool is_two_edge_slit(typename boost::graph_traits<PolygonMesh>::halfedge_descriptor h,
+                      const PolygonMesh& pm) {
+  return is_border(h, pm) && next(next(h, pm), pm) == h;
+}
+
 /// Welds the coincident vertices of the border cycle of `h` and splits it at each weld
-/// (exact equality of points). Returns one border halfedge per resulting cycle; `welds`
-/// receives what `unweld_pinches` needs.
+/// (exact equality of points). Returns one border halfedge per resulting cycle of three edges
+/// or more (two-edge slits are zipped by `commit_pinches`); `welds` receives what
+/// `unweld_pinches` needs.
 template <class PolygonMesh, class VertexPointMap>
 std::vector<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor> weld_pinches(
     PolygonMesh& pm, VertexPointMap vpm,
@@ -85,7 +98,7 @@ std::vector<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor> weld
   std::unordered_set<halfedge_descriptor> seen;
   for (halfedge_descriptor c : cycle) {
     if (seen.count(c)) continue;
-    cycles.push_back(c);
+    if (!is_two_edge_slit(c, pm)) cycles.push_back(c);
     for (halfedge_descriptor d : halfedges_around_face(c, pm)) seen.insert(d);
   }
   return cycles;
@@ -105,13 +118,52 @@ void unweld_pinches(PolygonMesh& pm, std::vector<Pinch_weld<PolygonMesh>>& welds
   welds.clear();
 }
 
-/// Makes the welds permanent: removes the welded-away vertices.
+/// Zips the slit of `h` (`is_two_edge_slit`) into one edge: `h` takes the place of the
+/// opposite of the other border halfedge, whose edge is removed. CGAL's
+/// `stitch_boundary_cycle` refuses, as the two edges already join the same vertices. Returns
+/// false, changing nothing, when one face lies on both sides.
 template <class PolygonMesh>
-void commit_pinches(PolygonMesh& pm, std::vector<Pinch_weld<PolygonMesh>>& welds) {
+bool zip_two_edge_slit(typename boost::graph_traits<PolygonMesh>::halfedge_descriptor h,
+                       PolygonMesh& pm) {
+  const auto g = next(h, pm), og = opposite(g, pm);
+  const auto face_kept = face(og, pm);
+  if (face_kept == face(opposite(h, pm), pm)) return false;
+  const auto before = prev(og, pm), after = next(og, pm);
+  set_next(before, h, pm);
+  set_next(h, after, pm);
+  set_face(h, face_kept, pm);
+  if (halfedge(face_kept, pm) == og) set_halfedge(face_kept, h, pm);
+  set_halfedge(target(h, pm), h, pm);
+  set_halfedge(source(h, pm), opposite(h, pm), pm);
+  remove_edge(edge(g, pm), pm);
+  // A vertex on a border keeps a border halfedge, as the halfedge graph requires.
+  for (auto v : {target(h, pm), source(h, pm)})
+    for (auto around : halfedges_around_target(v, pm))
+      if (is_border(around, pm)) {
+        set_halfedge(v, around, pm);
+        break;
+      }
+  return true;
+}
+
+/// Makes the welds permanent: removes the welded-away vertices and zips the two-edge slits
+/// the welds made. Returns the number of slits zipped.
+template <class PolygonMesh>
+std::size_t commit_pinches(PolygonMesh& pm, std::vector<Pinch_weld<PolygonMesh>>& welds) {
   for (const auto& weld : welds) {
     if (weld.kept != weld.removed) remove_vertex(weld.removed, pm);
   }
+  std::vector<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor> slits;
+  for (const auto& weld : welds)
+    for (auto h : halfedges_around_target(weld.kept, pm))
+      if (is_two_edge_slit(h, pm) && std::find(slits.begin(), slits.end(), h) == slits.end() &&
+          std::find(slits.begin(), slits.end(), next(h, pm)) == slits.end())
+        slits.push_back(h);
+  std::size_t zipped = 0;
+  for (auto h : slits)
+    if (is_two_edge_slit(h, pm) && zip_two_edge_slit(h, pm)) ++zipped;
   welds.clear();
+  return zipped;
 }
 
 }  // namespace internal
