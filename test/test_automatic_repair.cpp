@@ -787,6 +787,71 @@ TEST(AutomaticRepair, AnOpeningThatAnotherPartReachesThroughIsClosedAndTheContac
   EXPECT_NEAR(CGAL::Polygon_mesh_processing::volume(merged), 1.6 + 0.16, 1e-6);
 }
 
+/// A sheet extruded along x (0 to 2, two quads of two triangles per segment) from a profile in
+/// the (y, z) plane, with vertices of its own.
+void add_extruded_sheet(Mesh& mesh, const std::vector<std::array<double, 2>>& profile) {
+  std::vector<std::array<Mesh::Vertex_index, 3>> rows;
+  for (const auto& yz : profile) {
+    std::array<Mesh::Vertex_index, 3> row;
+    for (int i = 0; i < 3; ++i) row[i] = mesh.add_vertex(Point(i, yz[0], yz[1]));
+    rows.push_back(row);
+  }
+  for (std::size_t k = 0; k + 1 < rows.size(); ++k)
+    for (int i = 0; i < 2; ++i) {
+      mesh.add_face(rows[k][i], rows[k][i + 1], rows[k + 1][i + 1]);
+      mesh.add_face(rows[k][i], rows[k + 1][i + 1], rows[k + 1][i]);
+    }
+}
+
+// Two sheets with a common seam whose vertices are distinct (stitching joins them), one folded
+// back down through the other. Their intersections are between two parts in the input and
+// inside one part once stitched: the input's own, not pairs the repair added.
+TEST(AutomaticRepair, PairsBetweenPartsThatStitchingJoinsAreTheInputsOwn) {
+  Mesh mesh;
+  add_extruded_sheet(mesh, {{0, 0}, {1, 0}});
+  add_extruded_sheet(mesh, {{1, 0}, {2, 0}, {2, 1}, {0.5, 1}, {0.5, -1}});
+  ASSERT_GT(self_intersection_count(mesh), 0u);
+  const auto result = MR::automatic_repair(mesh, MR::parameters::repair_self_intersections(false));
+  EXPECT_EQ(result.self_intersections_input_between_components, result.self_intersections_input);
+  EXPECT_GT(result.self_intersections_joined_by_stitching, 0u);
+  EXPECT_EQ(result.self_intersections_in_patches, 0u);
+  EXPECT_EQ(result.self_intersections_between_components, 0u);  // one part now
+  // The pairs left are those of the fold (the seam's contacts are gone with the seam).
+  EXPECT_GT(result.self_intersections_output, 0u);
+  EXPECT_EQ(result.self_intersections_joined_by_stitching, result.self_intersections_output);
+  bool listed = false;
+  for (const std::string& line : result.remaining) {
+    EXPECT_EQ(line.find("more than in the input"), std::string::npos) << line;
+    listed = listed || line.find("between parts that stitching joined") != std::string::npos;
+  }
+  EXPECT_TRUE(listed);
+}
+
+/// The checks of a union of unit balls (`merge_intersecting_solids`): complete, `merged` parts
+/// merged, closed, valid, free of self-intersections, `components` parts left, and the volume
+/// within 1 % of `balls` balls minus `lenses` lenses of balls `distance` apart, scaled by the
+/// volume of one polyhedral ball (`one`) and plus `extra` (in units of `one`).
+void expect_union_of_balls(const Mesh& mesh, const MR::Repair_result& result, std::size_t merged,
+                           std::size_t components, int balls, int lenses, double distance,
+                           double one, double extra = 0) {
+  EXPECT_EQ(result.status(), MR::Repair_status::complete)
+      << (result.remaining.empty() ? "" : result.remaining.front());
+  EXPECT_EQ(result.solids_merged, merged);
+  EXPECT_EQ(self_intersection_count(mesh), 0u);
+  EXPECT_TRUE(CGAL::is_closed(mesh));
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  Mesh copy = mesh;
+  EXPECT_EQ(CGAL::Polygon_mesh_processing::connected_components(
+                copy, copy.add_property_map<Mesh::Face_index, std::size_t>("f:cc").first),
+            components);
+  // Two unit balls d apart overlap in a lens of volume pi (4 + d) (2 - d)^2 / 12.
+  const double d = distance;
+  const double lens = std::acos(-1.0) * (4 + d) * (2 - d) * (2 - d) / 12;
+  const double ball = 4 * std::acos(-1.0) / 3;
+  const double expected = (balls * ball - lenses * lens) * one / ball + extra * one;
+  EXPECT_NEAR(CGAL::Polygon_mesh_processing::volume(mesh), expected, 0.01 * expected);
+}
+
 // Two interpenetrating spheres and a third apart, with `merge_intersecting_solids`: the two
 // become their union (one closed part, no self-intersection, the faces inside removed: its
 // volume is that of the union of the two balls), the third is untouched.
@@ -798,22 +863,8 @@ TEST(AutomaticRepair, IntersectingSolidsBecomeTheirUnionWhenAsked) {
   const double one = CGAL::Polygon_mesh_processing::volume(mesh) / (2 + 0.125);
   ASSERT_GT(self_intersection_count(mesh), 0u);
   const auto result = MR::automatic_repair(mesh, MR::parameters::merge_intersecting_solids(true));
-  EXPECT_EQ(result.status(), MR::Repair_status::complete)
-      << (result.remaining.empty() ? "" : result.remaining.front());
-  EXPECT_EQ(result.solids_merged, 2u);
   EXPECT_EQ(result.self_intersections_output, 0u);
-  EXPECT_EQ(self_intersection_count(mesh), 0u);
-  EXPECT_TRUE(CGAL::is_closed(mesh));
-  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
-  EXPECT_EQ(CGAL::Polygon_mesh_processing::connected_components(
-                mesh, mesh.add_property_map<Mesh::Face_index, std::size_t>("f:cc").first),
-            2u);
-  // Two unit balls 1.204 apart overlap in a lens of volume pi (4 + d) (2 - d)^2 / 12.
-  const double d = std::hypot(1.2, 0.1);
-  const double lens = std::acos(-1.0) * (4 + d) * (2 - d) * (2 - d) / 12;
-  const double ball = 4 * std::acos(-1.0) / 3;
-  const double expected = (2 * ball - lens) * one / ball + 0.125 * one;
-  EXPECT_NEAR(CGAL::Polygon_mesh_processing::volume(mesh), expected, 0.01 * expected);
+  expect_union_of_balls(mesh, result, 2, 2, 2, 1, std::hypot(1.2, 0.1), one, 0.125);
   const auto* step = find_step(result, "intersecting solids merged");
   ASSERT_NE(step, nullptr);
   EXPECT_EQ(step->count("unions"), 1.0);
@@ -828,20 +879,7 @@ TEST(AutomaticRepair, AnOddRowOfIntersectingSolidsBecomesOneSolid) {
   for (int k = 0; k < 5; ++k) MR::make_sphere(mesh, Point(1.2 * k, 0.05 * k, 0), 1.0, 3);
   const double one = CGAL::Polygon_mesh_processing::volume(mesh) / 5;
   const auto result = MR::automatic_repair(mesh, MR::parameters::merge_intersecting_solids(true));
-  EXPECT_EQ(result.status(), MR::Repair_status::complete)
-      << (result.remaining.empty() ? "" : result.remaining.front());
-  EXPECT_EQ(result.solids_merged, 5u);
-  EXPECT_EQ(self_intersection_count(mesh), 0u);
-  EXPECT_TRUE(CGAL::is_closed(mesh));
-  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
-  EXPECT_EQ(CGAL::Polygon_mesh_processing::connected_components(
-                mesh, mesh.add_property_map<Mesh::Face_index, std::size_t>("f:cc").first),
-            1u);
-  const double d = std::hypot(1.2, 0.05);
-  const double lens = std::acos(-1.0) * (4 + d) * (2 - d) * (2 - d) / 12;
-  const double ball = 4 * std::acos(-1.0) / 3;
-  const double expected = (5 * ball - 4 * lens) * one / ball;
-  EXPECT_NEAR(CGAL::Polygon_mesh_processing::volume(mesh), expected, 0.01 * expected);
+  expect_union_of_balls(mesh, result, 5, 1, 5, 4, std::hypot(1.2, 0.05), one);
 }
 
 // Two cubes of the same height, one shifted sideways into the other: their top and bottom faces

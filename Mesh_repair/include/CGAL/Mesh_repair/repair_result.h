@@ -63,6 +63,11 @@ struct Repair_result {
   /// Pairs inside the parts beyond the input's (pairs between parts that a patch closing one
   /// part against another adds are counted with the pairs between components).
   std::size_t self_intersections_in_patches = 0;
+  /// Pairs between two parts that became pairs inside one part when stitching joined the parts
+  /// (at the start, or when coincident halfedges are stitched at the end): still the input's
+  /// own intersections (or kept ones between parts), not added, and not counted in
+  /// `self_intersections_in_patches`.
+  std::size_t self_intersections_joined_by_stitching = 0;
   /// Set when a count stopped at its pair limit (internal/bounded_pairs.h: max(100000,
   /// 10 x faces)); the count is then a lower bound.
   bool self_intersections_input_truncated = false, self_intersections_output_truncated = false;
@@ -133,6 +138,7 @@ inline void write_json(Json_writer& json, const Repair_result& r) {
              r.self_intersections_input_between_components)
       .field("self_intersections_output", r.self_intersections_output)
       .field("self_intersections_in_patches", r.self_intersections_in_patches)
+      .field("self_intersections_joined_by_stitching", r.self_intersections_joined_by_stitching)
       .field("self_intersections_input_truncated", r.self_intersections_input_truncated)
       .field("self_intersections_output_truncated", r.self_intersections_output_truncated)
       .field("self_intersections_between_components", r.self_intersections_between_components)

@@ -313,7 +313,7 @@ void verify_again(const PolygonMesh& pm, const Repair_options& options,
   result.border_cycles_left = border_cycles(pm).size();
   result.closed = result.border_cycles_left == 0;
   if (faces_changed && options.detect_self_intersections) {
-    set_output_self_intersections(pm, result);
+    set_output_self_intersections(pm, result, census.halfedge_pairs_stitched > 0);
   }
   result.output_vertices = count_vertices(pm);
   result.output_faces = count_faces(pm);

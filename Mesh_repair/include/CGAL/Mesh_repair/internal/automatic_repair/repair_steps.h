@@ -180,20 +180,54 @@ inline std::size_t pairs_added_within_parts(const Repair_result& result) {
     return all - std::min(all, between);
   };
   const std::size_t before =
-      within(result.self_intersections_input, result.self_intersections_input_between_components);
+      within(result.self_intersections_input, result.self_intersections_input_between_components) +
+      result.self_intersections_joined_by_stitching;
   const std::size_t after =
       within(result.self_intersections_output, result.self_intersections_between_components);
   return after > before ? after - before : 0;
 }
 
+/// The pairs inside the parts that `census` counts beyond `within_before`: when a stitch joined
+/// parts, pairs between them that are now inside one.
+inline std::size_t pairs_moved_inside(const Self_intersection_census& census,
+                                      std::size_t within_before) {
+  const std::size_t within = census.all - std::min(census.all, census.between);
+  return census.truncated || within <= within_before ? 0 : within - within_before;
+}
+
 /// Counts the output's pairs into `result`, and the pairs the repair added inside the parts.
+/// With `parts_joined` (a stitch since the last count), the pairs that moved inside a part
+/// are added to `self_intersections_joined_by_stitching` instead.
 template <class PolygonMesh>
-void set_output_self_intersections(const PolygonMesh& pm, Repair_result& result) {
+void set_output_self_intersections(const PolygonMesh& pm, Repair_result& result,
+                                   bool parts_joined = false) {
   const Self_intersection_census census = self_intersection_census(pm);
+  if (parts_joined && !result.self_intersections_output_truncated)
+    result.self_intersections_joined_by_stitching +=
+        pairs_moved_inside(census, result.self_intersections_output -
+                                       std::min(result.self_intersections_output,
+                                                result.self_intersections_between_components));
   result.self_intersections_output = census.all;
   result.self_intersections_between_components = census.between;
   result.self_intersections_output_truncated = census.truncated;
   result.self_intersections_in_patches = pairs_added_within_parts(result);
+}
+
+/// After the stitching steps: the input's pairs between parts that stitching put inside one
+/// part (only when the input has pairs between parts, else there is nothing to move).
+template <class PolygonMesh>
+void step_count_pairs_joined_by_stitching(const PolygonMesh& pm, Repair_result& result,
+                                          Any_visitor visitor) {
+  if (result.self_intersections_input_between_components == 0 ||
+      result.self_intersections_input_truncated)
+    return;
+  Step_timer timer(result, "input pairs in stitched parts", visitor);
+  const Self_intersection_census census = self_intersection_census(pm);
+  result.self_intersections_joined_by_stitching = pairs_moved_inside(
+      census, result.self_intersections_input - result.self_intersections_input_between_components);
+  timer.count("pairs", double(census.all));
+  timer.count("pairs_between_components", double(census.between));
+  timer.count("pairs_joined_by_stitching", double(result.self_intersections_joined_by_stitching));
 }
 
 template <class PolygonMesh>
@@ -1511,7 +1545,13 @@ inline void list_remaining(Repair_result& result) {
           result.self_intersections_in_patches == 0,
       std::string(result.self_intersections_output_truncated ? "at least " : "") +
           std::to_string(result.self_intersections_output - between) +
-          " self-intersecting face pair(s) (already in the input)");
+          " self-intersecting face pair(s) (already in the input" +
+          (result.self_intersections_joined_by_stitching > 0
+               ? "; " +
+                     std::to_string(std::min(result.self_intersections_joined_by_stitching,
+                                             result.self_intersections_output - between)) +
+                     " of them between parts that stitching joined)"
+               : ")"));
   add(result.self_intersections_checked && between > 0 && result.self_intersections_in_patches == 0,
       std::to_string(between) +
           " self-intersecting face pair(s) between separate components (each stays a solid of its "
@@ -1552,6 +1592,8 @@ Repair_result run_repair_pipeline(
   }
   step_exact_stitching(pm, result, visitor);
   step_tolerance_stitching(pm, vpm, traits, options, visitor, result);
+  if (!result.cancelled && options.detect_self_intersections)
+    step_count_pairs_joined_by_stitching(pm, result, visitor);
   if (!result.cancelled) step_non_manifold_vertices(pm, result, visitor);
   if (!result.cancelled) step_close_slits(pm, vpm, result, visitor);
   if (!result.cancelled) step_degenerate_faces(pm, vpm, result, visitor);
