@@ -820,47 +820,80 @@ TEST(FillHoles, SheetBorderRatioIsOneForAFlatSheetAndSmallForAHoleInASphere) {
               (1 - z * z) / (2 * (1 + z)), 0.02);
 }
 
+/// A 5 x 5 grid of cells (two triangles each) on a gentle saddle, without the cell `hole` (when
+/// in range); the cells of `cut` take a copy of the corner (2,2) instead of it, so that the edges
+/// between them and the other cells around the corner are cut.
+Mesh grid_cut_at_a_corner(const std::set<std::pair<int, int>>& cut, std::pair<int, int> hole,
+                          Point& corner, Point& below) {
+  Mesh mesh;
+  std::vector<Mesh::Vertex_index> grid;
+  for (int j = 0; j < 6; ++j)
+    for (int i = 0; i < 6; ++i) grid.push_back(mesh.add_vertex(Point(i, j, 0.05 * i * j)));
+  corner = mesh.point(grid[6 * 2 + 2]);
+  below = mesh.point(grid[6 * 1 + 2]);
+  const auto corner_copy = mesh.add_vertex(corner);
+  for (int j = 0; j < 5; ++j)
+    for (int i = 0; i < 5; ++i) {
+      if (std::make_pair(i, j) == hole) continue;
+      auto at = [&](int a, int b) {
+        return cut.count({i, j}) && a == 2 && b == 2 ? corner_copy : grid[6 * b + a];
+      };
+      mesh.add_face(at(i, j), at(i + 1, j), at(i + 1, j + 1));
+      mesh.add_face(at(i, j), at(i + 1, j + 1), at(i, j + 1));
+    }
+  return mesh;
+}
+
+/// The edges of `mesh` from `a` to `b` (either way); none of them on a border.
+std::size_t interior_edges_between(const Mesh& mesh, const Point& a, const Point& b) {
+  std::size_t found = 0;
+  for (auto e : edges(mesh)) {
+    const Point s = mesh.point(source(e, mesh)), t = mesh.point(target(e, mesh));
+    if ((s == a && t == b) || (s == b && t == a)) {
+      ++found;
+      EXPECT_FALSE(CGAL::is_border(e, mesh));
+    }
+  }
+  return found;
+}
+
 // A hole whose border runs out along a cut edge and back: the cut's two sides end at coincident
 // copies of the hole's corner. Welding the copies leaves a loop of two edges joining the same
 // two vertices, which no method can triangulate and `is_valid_polygon_mesh` rejects; it is
 // zipped into one edge with the rest of the hole filled.
 TEST(FillHoles, AHoleRunningAlongACutEdgeIsFilledAndTheCutZipped) {
-  Mesh mesh;
-  std::vector<Mesh::Vertex_index> grid;
-  for (int j = 0; j < 6; ++j)
-    for (int i = 0; i < 6; ++i) grid.push_back(mesh.add_vertex(Point(i, j, 0.05 * i * j)));
-  const auto corner_copy = mesh.add_vertex(mesh.point(grid[6 * 2 + 2]));
-  for (int j = 0; j < 5; ++j)
-    for (int i = 0; i < 5; ++i) {
-      if (i == 2 && j == 2) continue;  // the hole
-      // The cell right of the cut edge (2,1)-(2,2) takes the copy of the corner (2,2).
-      auto at = [&](int a, int b) {
-        return i == 2 && j == 1 && a == 2 && b == 2 ? corner_copy : grid[6 * b + a];
-      };
-      ASSERT_NE(mesh.add_face(at(i, j), at(i + 1, j), at(i + 1, j + 1)), Mesh::null_face());
-      ASSERT_NE(mesh.add_face(at(i, j), at(i + 1, j + 1), at(i, j + 1)), Mesh::null_face());
-    }
+  Point corner, below;
+  Mesh mesh = grid_cut_at_a_corner({{2, 1}}, {2, 2}, corner, below);
   ASSERT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
   ASSERT_EQ(count_border_cycles(mesh), 2u);  // the outline and the hole with the cut
   const std::size_t vertices_before = mesh.number_of_vertices();
-  const Point below = mesh.point(grid[6 * 1 + 2]), corner = mesh.point(corner_copy);
   const MR::Fill_result result = MR::fill_holes(mesh);
   EXPECT_EQ(result.filled, 1u);
   EXPECT_EQ(result.sheet_borders, 1u);
   EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
   EXPECT_EQ(count_border_cycles(mesh), 1u);
-  EXPECT_EQ(mesh.number_of_vertices(), vertices_before - 1);  // the copy welded away
-  // One interior edge is left where the cut was.
-  std::size_t cut_edges = 0;
-  for (auto e : edges(mesh)) {
-    const Point a = mesh.point(source(e, mesh)), b = mesh.point(target(e, mesh));
-    if ((a == below && b == corner) || (a == corner && b == below)) {
-      ++cut_edges;
-      EXPECT_FALSE(CGAL::is_border(e, mesh));
-    }
-  }
-  EXPECT_EQ(cut_edges, 1u);
+  EXPECT_EQ(mesh.number_of_vertices(), vertices_before - 1);   // the copy welded away
+  EXPECT_EQ(interior_edges_between(mesh, below, corner), 1u);  // where the cut was
   EXPECT_FALSE(support::does_self_intersect(mesh));
+}
+
+// Two cut edges meeting at an inner vertex, and no cell missing: the "hole" is two slits, and
+// welding its coincident corners zips both; the grid is whole again, with no face added.
+TEST(FillHoles, AHoleOfTwoCutEdgesIsZippedShut) {
+  Point corner, below;
+  Mesh mesh = grid_cut_at_a_corner({{2, 1}, {2, 2}}, {-1, -1}, corner, below);
+  ASSERT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  ASSERT_EQ(count_border_cycles(mesh), 2u);
+  const std::size_t vertices_before = mesh.number_of_vertices();
+  const std::size_t faces_before = mesh.number_of_faces();
+  const MR::Fill_result result = MR::fill_holes(mesh);
+  EXPECT_EQ(result.filled, 1u);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  EXPECT_EQ(count_border_cycles(mesh), 1u);
+  EXPECT_EQ(mesh.number_of_vertices(), vertices_before - 1);
+  EXPECT_EQ(mesh.number_of_faces(), faces_before);
+  EXPECT_EQ(interior_edges_between(mesh, below, corner), 1u);
+  EXPECT_EQ(interior_edges_between(mesh, corner, Point(2, 3, 0.05 * 2 * 3)), 1u);
 }
 
 TEST(FillHoles, TheOutlineOfAnOpenSheetIsLeftOpenAndItsHoleFilled) {
