@@ -68,6 +68,10 @@ struct Repair_result {
   /// own intersections (or kept ones between parts), not added, and not counted in
   /// `self_intersections_in_patches`.
   std::size_t self_intersections_joined_by_stitching = 0;
+  /// Of the pairs after the stitching steps (counted only when the input has pairs between
+  /// components), those between two components: the input's, less the contacts along the seams
+  /// that stitching closed. Patches that close holes against other parts add to them later.
+  std::size_t self_intersections_between_components_after_stitching = 0;
   /// Set when a count stopped at its pair limit (internal/bounded_pairs.h: max(100000,
   /// 10 x faces)); the count is then a lower bound.
   bool self_intersections_input_truncated = false, self_intersections_output_truncated = false;
@@ -139,6 +143,8 @@ inline void write_json(Json_writer& json, const Repair_result& r) {
       .field("self_intersections_output", r.self_intersections_output)
       .field("self_intersections_in_patches", r.self_intersections_in_patches)
       .field("self_intersections_joined_by_stitching", r.self_intersections_joined_by_stitching)
+      .field("self_intersections_between_components_after_stitching",
+             r.self_intersections_between_components_after_stitching)
       .field("self_intersections_input_truncated", r.self_intersections_input_truncated)
       .field("self_intersections_output_truncated", r.self_intersections_output_truncated)
       .field("self_intersections_between_components", r.self_intersections_between_components)

@@ -196,17 +196,27 @@ inline std::size_t pairs_moved_inside(const Self_intersection_census& census,
 }
 
 /// Counts the output's pairs into `result`, and the pairs the repair added inside the parts.
-/// With `parts_joined` (a stitch since the last count), the pairs that moved inside a part
-/// are added to `self_intersections_joined_by_stitching` instead.
+/// With `parts_joined` (a stitch since the last count), the pairs that moved inside a part are
+/// added to `self_intersections_joined_by_stitching`, less as many as the patches closing holes
+/// against other parts added between parts since the stitching steps: those may be among them,
+/// and they stay counted as added.
 template <class PolygonMesh>
 void set_output_self_intersections(const PolygonMesh& pm, Repair_result& result,
                                    bool parts_joined = false) {
   const Self_intersection_census census = self_intersection_census(pm);
-  if (parts_joined && !result.self_intersections_output_truncated)
-    result.self_intersections_joined_by_stitching +=
+  if (parts_joined && !result.self_intersections_output_truncated) {
+    const std::size_t between = result.self_intersections_between_components;
+    const std::size_t moved =
         pairs_moved_inside(census, result.self_intersections_output -
-                                       std::min(result.self_intersections_output,
-                                                result.self_intersections_between_components));
+                                       std::min(result.self_intersections_output, between));
+    const std::size_t stitched_between =
+        result.self_intersections_input_between_components == 0
+            ? 0
+            : result.self_intersections_between_components_after_stitching;
+    const std::size_t added_between = between > stitched_between ? between - stitched_between : 0;
+    if (moved > added_between)
+      result.self_intersections_joined_by_stitching += moved - added_between;
+  }
   result.self_intersections_output = census.all;
   result.self_intersections_between_components = census.between;
   result.self_intersections_output_truncated = census.truncated;
@@ -225,6 +235,7 @@ void step_count_pairs_joined_by_stitching(const PolygonMesh& pm, Repair_result& 
   const Self_intersection_census census = self_intersection_census(pm);
   result.self_intersections_joined_by_stitching = pairs_moved_inside(
       census, result.self_intersections_input - result.self_intersections_input_between_components);
+  result.self_intersections_between_components_after_stitching = census.between;
   timer.count("pairs", double(census.all));
   timer.count("pairs_between_components", double(census.between));
   timer.count("pairs_joined_by_stitching", double(result.self_intersections_joined_by_stitching));
