@@ -896,6 +896,30 @@ TEST(FillHoles, AHoleOfTwoCutEdgesIsZippedShut) {
   EXPECT_EQ(interior_edges_between(mesh, corner, Point(2, 3, 0.05 * 2 * 3)), 1u);
 }
 
+// A closed fan of six triangles around an apex whose outline passes twice through one point (two
+// distinct vertices there, both joined to the apex by inner edges). Welding them would join the
+// apex to the weld by two edges, an edge of four faces in a file: the weld is refused, and
+// whatever the methods do, no two edges join the same two vertices.
+TEST(FillHoles, APinchWhoseWeldWouldDoubleAnEdgeIsNotWelded) {
+  Mesh mesh;
+  const auto apex = mesh.add_vertex(Point(0, 0, 1));
+  const std::vector<Point> ring{{1, 0, 0}, {0.5, 1, 0},   {-0.5, 1, 0},
+                                {1, 0, 0}, {-0.5, -1, 0}, {0.5, -1, 0}};
+  std::vector<Mesh::Vertex_index> around;
+  for (const Point& p : ring) around.push_back(mesh.add_vertex(p));
+  for (std::size_t i = 0; i < 6; ++i)
+    ASSERT_NE(mesh.add_face(apex, around[i], around[(i + 1) % 6]), Mesh::null_face());
+  MR::fill_holes(mesh, MR::parameters::sheet_border_ratio(std::numeric_limits<double>::infinity()));
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+  std::set<std::pair<Mesh::Vertex_index, Mesh::Vertex_index>> joined;
+  for (auto e : edges(mesh)) {
+    const Mesh::Vertex_index s = source(e, mesh), t = target(e, mesh);
+    const std::pair<Mesh::Vertex_index, Mesh::Vertex_index> ends(std::min(s, t), std::max(s, t));
+    EXPECT_TRUE(joined.insert(ends).second)
+        << "two edges join " << ends.first << " and " << ends.second;
+  }
+}
+
 TEST(FillHoles, TheOutlineOfAnOpenSheetIsLeftOpenAndItsHoleFilled) {
   Mesh mesh = bumpy_sheet(60);
   punch_hole(mesh, Point(0.2, -0.1, 0.1 * std::sin(0.6) * std::cos(-0.2)), 0.25);

@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <array>
 #include <map>
+#include <set>
 #include <unordered_set>
 #include <vector>
 
@@ -57,6 +58,29 @@ bool is_two_edge_slit(typename boost::graph_traits<PolygonMesh>::halfedge_descri
   return is_border(h, pm) && next(next(h, pm), pm) == h;
 }
 
+/// Whether welding the target of `in` into the target of `first` (border halfedges of one cycle)
+/// would join two edges that are not a two-edge loop of the cycle: a vertex adjacent to both
+/// would then be joined to the weld by two edges, which a file shows as one edge with more than
+/// two faces.
+template <class PolygonMesh>
+bool weld_doubles_an_edge(typename boost::graph_traits<PolygonMesh>::halfedge_descriptor first,
+                          typename boost::graph_traits<PolygonMesh>::halfedge_descriptor in,
+                          const PolygonMesh& pm) {
+  const auto kept = target(first, pm), removed = target(in, pm);
+  if (kept == removed) return false;
+  std::set<typename boost::graph_traits<PolygonMesh>::vertex_descriptor> neighbours;
+  for (auto around : halfedges_around_target(first, pm)) neighbours.insert(source(around, pm));
+  for (auto around : halfedges_around_target(in, pm)) {
+    const auto y = source(around, pm);
+    if (!neighbours.count(y)) continue;
+    const bool loop_after_first =
+        next(next(first, pm), pm) == in && target(next(first, pm), pm) == y;
+    const bool loop_after_in = next(next(in, pm), pm) == first && target(next(in, pm), pm) == y;
+    if (!loop_after_first && !loop_after_in) return true;
+  }
+  return false;
+}
+
 /// Welds the coincident vertices of the border cycle of `h` and splits it at each weld
 /// (exact equality of points). Returns one border halfedge per resulting cycle of three edges
 /// or more (two-edge slits are zipped by `commit_pinches`); `welds` receives what
@@ -74,7 +98,7 @@ std::vector<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor> weld
     auto found = entering.emplace(key, in);
     if (found.second) continue;
     const halfedge_descriptor first = found.first->second;
-    if (!in_same_cycle(first, in, pm)) continue;
+    if (!in_same_cycle(first, in, pm) || weld_doubles_an_edge(first, in, pm)) continue;
     Pinch_weld<PolygonMesh> weld;
     weld.kept_in = first;
     weld.removed_in = in;
