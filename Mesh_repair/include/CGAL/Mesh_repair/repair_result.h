@@ -66,7 +66,9 @@ struct Repair_result {
   /// Pairs between two parts that became pairs inside one part when stitching joined the parts
   /// (at the start, or when coincident halfedges are stitched at the end): still the input's
   /// own intersections (or kept ones between parts), not added, and not counted in
-  /// `self_intersections_in_patches`.
+  /// `self_intersections_in_patches`. Of the pairs the last stitch moves inside a part, only
+  /// those beyond the ones patches added between parts count here: a patch closing a hole
+  /// against another part adds pairs, and they stay counted as added.
   std::size_t self_intersections_joined_by_stitching = 0;
   /// Of the pairs after the stitching steps (counted only when the input has pairs between
   /// components), those between two components: the input's, less the contacts along the seams

@@ -59,18 +59,24 @@ bool is_two_edge_slit(typename boost::graph_traits<PolygonMesh>::halfedge_descri
 }
 
 /// Whether welding the target of `in` into the target of `first` (border halfedges of one cycle)
-/// would join two edges that are not a two-edge loop of the cycle: a vertex adjacent to both
+/// would join two edges that are not a two-edge loop of the cycle (a vertex adjacent to both
 /// would then be joined to the weld by two edges, which a file shows as one edge with more than
-/// two faces.
+/// two faces), or put the weld twice in one face (a face holding both vertices).
 template <class PolygonMesh>
 bool weld_doubles_an_edge(typename boost::graph_traits<PolygonMesh>::halfedge_descriptor first,
                           typename boost::graph_traits<PolygonMesh>::halfedge_descriptor in,
                           const PolygonMesh& pm) {
+  using GT = boost::graph_traits<PolygonMesh>;
   const auto kept = target(first, pm), removed = target(in, pm);
   if (kept == removed) return false;
-  std::set<typename boost::graph_traits<PolygonMesh>::vertex_descriptor> neighbours;
-  for (auto around : halfedges_around_target(first, pm)) neighbours.insert(source(around, pm));
+  std::set<typename GT::vertex_descriptor> neighbours;
+  std::set<typename GT::face_descriptor> faces;
+  for (auto around : halfedges_around_target(first, pm)) {
+    neighbours.insert(source(around, pm));
+    if (!is_border(around, pm)) faces.insert(face(around, pm));
+  }
   for (auto around : halfedges_around_target(in, pm)) {
+    if (!is_border(around, pm) && faces.count(face(around, pm))) return true;
     const auto y = source(around, pm);
     if (!neighbours.count(y)) continue;
     const bool loop_after_first =
@@ -145,7 +151,8 @@ void unweld_pinches(PolygonMesh& pm, std::vector<Pinch_weld<PolygonMesh>>& welds
 /// Zips the slit of `h` (`is_two_edge_slit`) into one edge: `h` takes the place of the
 /// opposite of the other border halfedge, whose edge is removed. CGAL's
 /// `stitch_boundary_cycle` refuses, as the two edges already join the same vertices. Returns
-/// false, changing nothing, when one face lies on both sides.
+/// false, changing nothing, when one face lies on both sides (`weld_pinches` makes no such slit:
+/// that face would hold both welded vertices).
 template <class PolygonMesh>
 bool zip_two_edge_slit(typename boost::graph_traits<PolygonMesh>::halfedge_descriptor h,
                        PolygonMesh& pm) {
