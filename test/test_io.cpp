@@ -11,10 +11,12 @@
 
 #include "scratch_folder.h"
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <sstream>
 #include <vector>
@@ -424,6 +426,60 @@ TEST(ReadWrite, ZeroVolumeWallsAreRemovedWholeOnlyWhenAsked) {
   EXPECT_TRUE(CGAL::is_closed(walls_removed));
   EXPECT_EQ(num_vertices(walls_removed), 12u);
   EXPECT_EQ(num_faces(walls_removed), 20u);
+}
+
+/// Two boxes of n x n x n unit cells, side by side along x, each written whole as quads of one
+/// cell (their common face twice, once per box).
+std::string boxes_sharing_a_face_off(int n) {
+  std::map<std::array<int, 3>, std::size_t> index;
+  std::vector<std::array<std::size_t, 4>> quads;
+  auto at = [&](std::array<int, 3> p) { return index.emplace(p, index.size()).first->second; };
+  for (int box = 0; box < 2; ++box)
+    for (int axis = 0; axis < 3; ++axis)
+      for (int side = 0; side < 2; ++side)
+        for (int i = 0; i < n; ++i)
+          for (int j = 0; j < n; ++j) {
+            const int u = (axis + 1) % 3, w = (axis + 2) % 3;
+            auto corner = [&](int a, int b) {
+              std::array<int, 3> p{};
+              p[axis] = side * n;
+              p[u] = a;
+              p[w] = b;
+              p[0] += box * n;
+              return at(p);
+            };
+            std::array<std::size_t, 4> q{corner(i, j), corner(i + 1, j), corner(i + 1, j + 1),
+                                         corner(i, j + 1)};
+            if (side == 0) std::swap(q[1], q[3]);
+            quads.push_back(q);
+          }
+  std::vector<std::array<int, 3>> points(index.size());
+  for (const auto& entry : index) points[entry.second] = entry.first;
+  std::ostringstream off;
+  off << "OFF\n" << points.size() << ' ' << quads.size() << " 0\n";
+  for (const auto& p : points) off << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+  for (const auto& q : quads)
+    off << "4 " << q[0] << ' ' << q[1] << ' ' << q[2] << ' ' << q[3] << '\n';
+  return off.str();
+}
+
+// A wall of many polygons goes whole: inside it, keeping one copy of a polygon or none leaves two
+// polygons per edge either way, and the inner polygons go with the outline's. Kept, they would
+// make a sheet inside the joined box, with a border and an edge of three faces around it.
+TEST(ReadWrite, AZeroVolumeWallOfManyPolygonsIsRemovedWhole) {
+  const fs::path path = scratch("boxes_sharing_a_face.off");
+  write_text(path, boxes_sharing_a_face_off(3));
+  Mesh mesh;
+  MR::Soup_repair_report report;
+  MR::Read_options options;
+  options.remove_zero_volume_walls = true;
+  ASSERT_EQ(MR::read_mesh(path.string(), mesh, report, options), "");
+  EXPECT_EQ(report.zero_volume_walls_removed, 1u);
+  EXPECT_EQ(report.duplicated_polygons_removed, 18u);
+  EXPECT_EQ(report.non_manifold_edges, 0u);
+  EXPECT_TRUE(CGAL::is_closed(mesh));
+  EXPECT_EQ(num_faces(mesh), 2u * (2 * 6 * 9 - 2 * 9));  // the quads of the outside, halved
+  EXPECT_EQ(num_vertices(mesh), std::size_t(7 * 4 * 4 - 5 * 2 * 2));  // the outside points
 }
 
 // A surface given twice (once per orientation) keeps one copy: removing both would leave

@@ -34,6 +34,7 @@
 #include <CGAL/Mesh_repair/internal/soup_edge.h>
 #include <CGAL/Mesh_repair/internal/soup_internal_walls.h>
 #include <CGAL/Mesh_repair/internal/soup_to_mesh.h>
+#include <CGAL/Mesh_repair/internal/zero_volume_walls.h>
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/boost/graph/Euler_operations.h>
@@ -183,9 +184,8 @@ inline std::vector<std::size_t> canonical_polygon(const std::vector<std::size_t>
   return key;
 }
 
-/// Removes every polygon of each group of duplicated polygons whose removal leaves fewer edges
-/// used by more than two distinct polygons than keeping one of them does (a zero-volume wall
-/// between two shells). Returns the groups and the polygons removed.
+/// Removes every polygon of the groups of duplicated polygons that form zero-volume walls between
+/// two shells (`choose_zero_volume_walls`). Returns the walls and the polygons removed.
 inline std::pair<std::size_t, std::size_t> remove_zero_volume_walls(
     std::vector<std::vector<std::size_t>>& polygons) {
   // Candidates: polygons on the same sorted point indices, then the same cyclic sequence.
@@ -233,23 +233,22 @@ inline std::pair<std::size_t, std::size_t> remove_zero_volume_walls(
     std::sort(entry.second.begin(), entry.second.end());
     entry.second.erase(std::unique(entry.second.begin(), entry.second.end()), entry.second.end());
   }
+  std::vector<Classes_along_edges> along(groups.size());
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    const auto& p = polygons[groups[g].front()];
+    for (std::size_t k = 0; k < p.size(); ++k)
+      along[g].push_back(classes[soup_edge(p[k], p[(k + 1) % p.size()])]);
+  }
+  const Zero_volume_walls walls = choose_zero_volume_walls(along);
   std::vector<bool> doomed(polygons.size(), false);
-  std::size_t walls = 0, removed = 0;
-  for (const auto& group : groups) {
-    const auto& p = polygons[group.front()];
-    std::size_t excess_keep_one = 0, excess_remove_all = 0;
-    for (std::size_t k = 0; k < p.size(); ++k) {
-      const std::size_t others = classes[soup_edge(p[k], p[(k + 1) % p.size()])].size() - 1;
-      excess_keep_one += others + 1 > 2 ? others - 1 : 0;
-      excess_remove_all += others > 2 ? others - 2 : 0;
-    }
-    if (excess_remove_all >= excess_keep_one) continue;
-    ++walls;
-    removed += group.size();
-    for (std::size_t i : group) doomed[i] = true;
+  std::size_t removed = 0;
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    if (!walls.removed[g]) continue;
+    removed += groups[g].size();
+    for (std::size_t i : groups[g]) doomed[i] = true;
   }
   soup_walls::erase_polygons(polygons, doomed);
-  return {walls, removed};
+  return {walls.walls, removed};
 }
 
 }  // namespace internal

@@ -7,9 +7,8 @@
 // a reader that merges coincident points (CGAL's read_polygon_mesh, which repairs the soup first)
 // sees vertices at one position as one vertex. The step
 // - removes faces that duplicate another one by position (the same three points, in either
-//   orientation): per group, either all of them (a zero-volume wall between two shells, whose
-//   edges then carry two faces) or all but one, whichever leaves fewer edges with more than two
-//   faces (ties keep one);
+//   orientation): either all of a group (part of a zero-volume wall between two shells, whose
+//   outline then carries two faces per edge) or all but one (internal/zero_volume_walls.h);
 // - removes isolated vertices (a file would keep them, a reader drops them);
 // - stitches coincident borders again (CGAL's stitch_borders): the merges of coincident vertices
 //   that keep the surface manifold;
@@ -22,6 +21,7 @@
 #include <CGAL/Mesh_repair/internal/automatic_repair/contact_separation.h>
 #include <CGAL/Mesh_repair/internal/automatic_repair/repair_steps.h>
 #include <CGAL/Mesh_repair/internal/detect_defects/coincident_elements.h>
+#include <CGAL/Mesh_repair/internal/zero_volume_walls.h>
 
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_mesh_to_polygon_soup.h>
@@ -94,16 +94,34 @@ class Coincident_elements {
     std::sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) {
       return a.first < b.first || (a.first == b.first && a.second < b.second);
     });
-    std::vector<face_descriptor> doomed;
+    std::vector<std::array<std::size_t, 3>> keys;
+    std::vector<std::vector<face_descriptor>> groups;
     for (std::size_t i = 0; i < keyed.size();) {
       std::size_t j = i + 1;
       while (j < keyed.size() && keyed[j].first == keyed[i].first) ++j;
       if (j - i > 1) {
-        std::vector<face_descriptor> group;
-        for (std::size_t k = i; k < j; ++k) group.push_back(keyed[k].second);
-        choose_removals(keyed[i].first, group, doomed, census);
+        keys.push_back(keyed[i].first);
+        groups.emplace_back();
+        for (std::size_t k = i; k < j; ++k) groups.back().push_back(keyed[k].second);
       }
       i = j;
+    }
+    std::vector<Classes_along_edges> along(groups.size());
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+      const auto& key = keys[g];
+      for (const auto& edge : {std::make_pair(key[0], key[1]), std::make_pair(key[1], key[2]),
+                               std::make_pair(key[0], key[2])})
+        along[g].push_back(classes_along(edge.first, edge.second, keys));
+    }
+    const Zero_volume_walls walls = choose_zero_volume_walls(along);
+    std::vector<face_descriptor> doomed;
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+      if (walls.removed[g]) {
+        doomed.insert(doomed.end(), groups[g].begin(), groups[g].end());
+        ++census.zero_volume_groups_removed;
+      } else {
+        keep_most_glued(groups[g], doomed);
+      }
     }
     for (face_descriptor f : doomed) CGAL::Euler::remove_face(halfedge(f, pm_), pm_);
     census.duplicated_faces_removed = doomed.size();
@@ -207,9 +225,12 @@ class Coincident_elements {
     return key;
   }
 
-  // Distinct faces along the segment (p, q) by position, whatever their vertices; faces on the
-  // same three positions count once (a surface given twice is not a wall).
-  std::size_t faces_along(std::size_t p, std::size_t q) const {
+  // The distinct classes of faces along the segment (p, q) by position, whatever their
+  // vertices: faces on the same three positions count once (a surface given twice is not a wall),
+  // with their index in `group_keys` (sorted) as class when they are a group of duplicates.
+  std::vector<std::size_t> classes_along(
+      std::size_t p, std::size_t q,
+      const std::vector<std::array<std::size_t, 3>>& group_keys) const {
     std::vector<std::array<std::size_t, 3>> seen;
     for (vertex_descriptor v : vertices_at_[p])
       for (halfedge_descriptor h : halfedges_around_target(v, pm_)) {
@@ -218,7 +239,15 @@ class Coincident_elements {
         if (!is_border(opposite(h, pm_), pm_)) seen.push_back(key_of(face(opposite(h, pm_), pm_)));
       }
     std::sort(seen.begin(), seen.end());
-    return std::size_t(std::unique(seen.begin(), seen.end()) - seen.begin());
+    seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
+    std::vector<std::size_t> classes;
+    for (std::size_t i = 0; i < seen.size(); ++i) {
+      const auto it = std::lower_bound(group_keys.begin(), group_keys.end(), seen[i]);
+      classes.push_back(it != group_keys.end() && *it == seen[i]
+                            ? std::size_t(it - group_keys.begin())
+                            : group_keys.size() + i);
+    }
+    return classes;
   }
 
   // Faces outside `group` glued to `f` through its halfedges.
@@ -232,27 +261,13 @@ class Coincident_elements {
     return n;
   }
 
-  void choose_removals(const std::array<std::size_t, 3>& key,
-                       const std::vector<face_descriptor>& group,
-                       std::vector<face_descriptor>& doomed, Coincidence_census& census) const {
-    const std::size_t k = group.size();
-    std::size_t excess_keep_one = 0, excess_remove_all = 0;
-    for (const auto& edge : {std::make_pair(key[0], key[1]), std::make_pair(key[1], key[2]),
-                             std::make_pair(key[0], key[2])}) {
-      const std::size_t others = faces_along(edge.first, edge.second) - 1;
-      excess_keep_one += others + 1 > 2 ? others - 1 : 0;
-      excess_remove_all += others > 2 ? others - 2 : 0;
-    }
-    if (excess_remove_all < excess_keep_one) {
-      doomed.insert(doomed.end(), group.begin(), group.end());
-      ++census.zero_volume_groups_removed;
-      return;
-    }
-    // Keep the face most glued to the rest of the surface (the first on a tie).
+  // Keeps the face of a group most glued to the rest of the surface (the first on a tie).
+  void keep_most_glued(const std::vector<face_descriptor>& group,
+                       std::vector<face_descriptor>& doomed) const {
     std::size_t kept = 0;
-    for (std::size_t i = 1; i < k; ++i)
+    for (std::size_t i = 1; i < group.size(); ++i)
       if (glued_outside(group[i], group) > glued_outside(group[kept], group)) kept = i;
-    for (std::size_t i = 0; i < k; ++i)
+    for (std::size_t i = 0; i < group.size(); ++i)
       if (i != kept) doomed.push_back(group[i]);
   }
 
