@@ -4,6 +4,7 @@
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Mesh_repair/detect_defects.h>
 #include <CGAL/Mesh_repair/generators.h>
 #include <CGAL/Mesh_repair/internal/child_process.h>
@@ -1606,4 +1607,68 @@ TEST(AutomaticRepair, AFragmentIsKeptWhenAskedAndTheReportMatchesTheMesh) {
   EXPECT_EQ(result.border_cycles_left,
             result.sheet_borders_left_open + result.holes_too_large + result.holes.failed);
   EXPECT_TRUE(result.valid);
+}
+
+namespace {
+
+/// A sphere of radius 2 holding a sphere of radius 1, both facing outward, or the inner one
+/// inward (`cavity`: a hollow ball).
+Mesh sphere_in_sphere(bool cavity) {
+  Mesh mesh, inner;
+  MR::make_sphere(mesh, Point(0, 0, 0), 2.0, 3);
+  MR::make_sphere(inner, Point(0.2, 0.1, 0), 1.0, 3);
+  if (cavity) CGAL::Polygon_mesh_processing::reverse_face_orientations(inner);
+  CGAL::copy_face_graph(inner, mesh);
+  return mesh;
+}
+
+double step_count(const MR::Repair_result& result, const std::string& step,
+                  const std::string& key) {
+  const MR::Repair_step_report* found = find_step(result, step);
+  if (found == nullptr) return -1;
+  for (const auto& count : found->counts)
+    if (count.first == key) return count.second;
+  return 0;
+}
+
+}  // namespace
+
+// A hollow ball written inside out: the outer surface is turned outward and the cavity's
+// surface with it, so that the mesh bounds the shell's volume again; with the option off both
+// stay as they were.
+TEST(AutomaticRepair, AMeshWrittenInsideOutIsTurnedOutwardWithItsCavity) {
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  Mesh mesh = sphere_in_sphere(true);
+  const double shell_volume = PMP::volume(mesh);
+  ASSERT_GT(shell_volume, 0.0);
+  ASSERT_TRUE(PMP::does_bound_a_volume(mesh));
+  PMP::reverse_face_orientations(mesh);
+  Mesh kept = mesh;
+  const MR::Repair_result result = MR::automatic_repair(mesh);
+  EXPECT_EQ(result.closed_parts_reversed_outward, 1u);
+  EXPECT_EQ(result.closed_parts_reversed_with_container, 1u);
+  EXPECT_EQ(step_count(result, "orientation of closed parts", "nested_parts"), 1.0);
+  EXPECT_NEAR(PMP::volume(mesh), shell_volume, 1e-9 * shell_volume);
+  EXPECT_TRUE(PMP::does_bound_a_volume(mesh));
+  EXPECT_EQ(result.status(), MR::Repair_status::complete);
+
+  const MR::Repair_result off =
+      MR::automatic_repair(kept, MR::parameters::orient_closed_parts(false));
+  EXPECT_EQ(find_step(off, "orientation of closed parts"), nullptr);
+  EXPECT_EQ(off.closed_parts_reversed_outward, 0u);
+  EXPECT_NEAR(PMP::volume(kept), -shell_volume, 1e-9 * shell_volume);
+}
+
+// A solid inside a solid, both facing outward (the eyes inside a figure): nothing tells it
+// from a cavity written the wrong way, so it keeps its orientation and is not made a cavity.
+TEST(AutomaticRepair, ASolidInsideASolidKeepsFacingOutward) {
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  Mesh mesh = sphere_in_sphere(false);
+  const double volumes = PMP::volume(mesh);
+  const MR::Repair_result result = MR::automatic_repair(mesh);
+  EXPECT_EQ(step_count(result, "orientation of closed parts", "closed_parts"), 2.0);
+  EXPECT_EQ(step_count(result, "orientation of closed parts", "nested_parts"), 1.0);
+  EXPECT_EQ(result.closed_parts_reversed_outward, 0u);
+  EXPECT_EQ(result.closed_parts_reversed_with_container, 0u);
+  EXPECT_NEAR(PMP::volume(mesh), volumes, 1e-9 * volumes);
 }

@@ -59,6 +59,9 @@ const char* const repair_help =
     "                           are removed before filling, and counted)\n"
     "  --no-through-holes       cap both ends of a through-hole whose wall is missing (by\n"
     "                           default a tube joins the two ends, and is counted)\n"
+    "  --keep-orientation       keep the orientation of closed parts (by default each is\n"
+    "                           turned to face outward when it faces inward, with the parts\n"
+    "                           inside it; counted)\n"
     "  --no-ring-holes          fill islands and their hole separately\n"
     "  --no-self-intersections  neither count nor remove self-intersections (faster)\n"
     "  --keep-self-intersections  keep the input's self-intersections (default: closed parts\n"
@@ -95,6 +98,7 @@ namespace {
 const std::set<std::string> repair_flags = {"--keep-components",
                                             "--keep-fragments",
                                             "--no-through-holes",
+                                            "--keep-orientation",
                                             "--largest-component",
                                             "--no-ring-holes",
                                             "--no-self-intersections",
@@ -325,6 +329,7 @@ int repair_one(const Arguments& args) {
                 .keep_largest_component(args.has("--largest-component"))
                 .remove_hole_fragments(!args.has("--keep-fragments"))
                 .bridge_through_holes(!args.has("--no-through-holes"))
+                .orient_closed_parts(!args.has("--keep-orientation"))
                 .detect_ring_holes(!args.has("--no-ring-holes"))
                 .detect_self_intersections(!args.has("--no-self-intersections"))
                 .repair_self_intersections(!args.has("--keep-self-intersections") &&

@@ -224,7 +224,8 @@ def repair(vertices, faces=None, *, tolerance=None, tolerance_rel=None, fill="se
            fill_sheet_borders=False, largest_component=False, ring_holes=True,
            self_intersections=True, remove_self_intersections=True,
            merge_intersecting_solids=False, remove_hole_fragments=True,
-           bridge_through_holes=True, threads=0, seed=0, progress=None):
+           bridge_through_holes=True, orient_closed_parts=True, threads=0, seed=0,
+           progress=None):
     """The automatic repair pipeline (``mesh_repair repair``): soup repair and orientation,
     stitching of gaps and overlaps, T-junctions, degenerate faces, hole filling, verification.
     Options as the CLI's (``mesh_repair repair --help``): ``fill`` one of ``FILL_METHODS``,
@@ -236,7 +237,9 @@ def repair(vertices, faces=None, *, tolerance=None, tolerance_rel=None, fill="se
     union (CGAL corefinement; the faces inside are removed), ``remove_hole_fragments`` removes
     the small open fragments of scans found in holes before filling (counted; ``False`` keeps
     them), ``bridge_through_holes`` gives the through-holes of a part whose wall is missing a
-    tube between their two ends (counted; ``False`` leaves both ends to the hole filling).
+    tube between their two ends (counted; ``False`` leaves both ends to the hole filling),
+    ``orient_closed_parts`` turns every closed part that faces inward outward, with the parts
+    inside it (cavities stay cavities; counted; ``False`` keeps their orientation).
     Returns a ``Result``; the report holds ``soup_repair``, ``defects_before``,
     ``defects_after`` and ``repair``."""
     options = _tolerance({}, tolerance, tolerance_rel)
@@ -251,6 +254,7 @@ def repair(vertices, faces=None, *, tolerance=None, tolerance_rel=None, fill="se
         merge_intersecting_solids=bool(merge_intersecting_solids),
         remove_hole_fragments=bool(remove_hole_fragments),
         bridge_through_holes=bool(bridge_through_holes),
+        orient_closed_parts=bool(orient_closed_parts),
         threads=_number("threads", threads, 0, 1024, integer=True),
         seed=_number("seed", seed, 0, 2**32 - 1, integer=True),
     )

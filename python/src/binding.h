@@ -103,6 +103,7 @@ struct Repair_options {
   bool merge_intersecting_solids = false;
   bool remove_hole_fragments = true;
   bool bridge_through_holes = true;
+  bool orient_closed_parts = true;
   int threads = 0;
   unsigned seed = 0;
 };

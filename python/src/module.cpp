@@ -367,6 +367,7 @@ PYBIND11_MODULE(_core, m) {
         .get("merge_intersecting_solids", o.merge_intersecting_solids)
         .get("remove_hole_fragments", o.remove_hole_fragments)
         .get("bridge_through_holes", o.bridge_through_holes)
+        .get("orient_closed_parts", o.orient_closed_parts)
         .get("threads", o.threads)
         .get("seed", o.seed)
         .finish();

@@ -291,6 +291,7 @@ Operator_output repair(Mesh_input& input, const Repair_options& options, Python_
                 .merge_intersecting_solids(options.merge_intersecting_solids)
                 .remove_hole_fragments(options.remove_hole_fragments)
                 .bridge_through_holes(options.bridge_through_holes)
+                .orient_closed_parts(options.orient_closed_parts)
                 .number_of_threads(options.threads)
                 .random_seed(options.seed)
                 .visitor(std::ref(visitor)));

@@ -549,3 +549,23 @@ def test_a_through_hole_gets_its_wall_unless_bridging_is_off():
     assert "through holes bridged" not in {s["name"] for s in capped.report["repair"]["steps"]}
     assert border_cycles(capped.vertices, capped.faces) == 0
     assert euler_characteristic(capped.vertices, capped.faces) == 2
+
+
+def signed_volume(vertices, faces):
+    v = np.asarray(vertices, dtype=float)
+    f = np.asarray(faces)
+    return float(np.einsum("ij,ij->i", v[f[:, 0]], np.cross(v[f[:, 1]], v[f[:, 2]])).sum() / 6)
+
+
+def test_a_cube_written_inside_out_is_turned_outward_unless_orientation_is_kept():
+    v, f = cube()
+    inside_out = np.asarray(f)[:, ::-1].copy()
+    assert signed_volume(v, inside_out) < 0
+    result = mesh_repair.repair(v, inside_out)
+    repair = result.report["repair"]
+    assert repair["closed_parts_reversed_outward"] == 1
+    assert repair["status"] == "complete", repair["remaining"]
+    assert signed_volume(result.vertices, result.faces) == pytest.approx(-signed_volume(v, inside_out))
+    kept = mesh_repair.repair(v, inside_out, orient_closed_parts=False)
+    assert kept.report["repair"]["closed_parts_reversed_outward"] == 0
+    assert signed_volume(kept.vertices, kept.faces) < 0

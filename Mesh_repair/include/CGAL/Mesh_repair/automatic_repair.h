@@ -42,6 +42,8 @@ Repair_options repair_options_from(const PolygonMesh& pm, const NamedParameters&
       get_parameter(np, internal_np::remove_hole_fragments_t{}), o.remove_hole_fragments);
   o.bridge_through_holes = choose_parameter(
       get_parameter(np, internal_np::bridge_through_holes_t{}), o.bridge_through_holes);
+  o.orient_closed_parts = choose_parameter(get_parameter(np, internal_np::orient_closed_parts_t{}),
+                                           o.orient_closed_parts);
   o.fill = fill_options_from(np);
   return o;
 }
@@ -147,6 +149,18 @@ Repair_options repair_options_from(const PolygonMesh& pm, const NamedParameters&
 ///       edge, kept only if no face of it meets another face (exact predicates; faces of other
 ///       parts may be met when the part already met another part). Counted in the step "through
 ///       holes bridged". Doc: automatic_repair.md, "Through-holes"}
+///     \cgalParamType{bool}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{orient_closed_parts}
+///     \cgalParamDescription{after the holes are filled and the intersections removed, turn
+///       every closed triangulated part that faces inward and lies inside no other closed part
+///       outward, and reverse the closed parts inside it with it (every vertex strictly inside,
+///       CGAL's `Side_of_triangle_mesh`): a cavity stays a cavity, a solid inside a solid stays
+///       one. A part that crosses another is a solid of its own; open parts are left as they
+///       are. Counted in `Repair_result::closed_parts_reversed_outward` and
+///       `closed_parts_reversed_with_container` and in the step "orientation of closed parts".
+///       Doc: automatic_repair.md, "Orientation of closed parts"}
 ///     \cgalParamType{bool}
 ///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd

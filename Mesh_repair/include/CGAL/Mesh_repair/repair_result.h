@@ -56,6 +56,11 @@ struct Repair_result {
   std::size_t output_vertices = 0, output_faces = 0;
   std::size_t components_removed = 0;  ///< only with `keep_largest_component`
   std::size_t faces_removed_with_components = 0;
+  /// Closed parts that faced inward, inside no other closed part, reversed to face outward.
+  std::size_t closed_parts_reversed_outward = 0;
+  /// Closed parts inside a part that was reversed, reversed with it (a cavity stays a cavity, a
+  /// solid inside a solid stays one).
+  std::size_t closed_parts_reversed_with_container = 0;
   std::size_t self_intersections_input = 0;  ///< pairs, when detection was asked
   /// Of the input's pairs, those between two connected components.
   std::size_t self_intersections_input_between_components = 0;
@@ -142,6 +147,8 @@ inline void write_json(Json_writer& json, const Repair_result& r) {
       .field("self_intersections_input", r.self_intersections_input)
       .field("self_intersections_input_between_components",
              r.self_intersections_input_between_components)
+      .field("closed_parts_reversed_outward", r.closed_parts_reversed_outward)
+      .field("closed_parts_reversed_with_container", r.closed_parts_reversed_with_container)
       .field("self_intersections_output", r.self_intersections_output)
       .field("self_intersections_in_patches", r.self_intersections_in_patches)
       .field("self_intersections_joined_by_stitching", r.self_intersections_joined_by_stitching)

@@ -76,6 +76,7 @@ MESH_REPAIR_PARAMETER(repair_self_intersections)  // bool: replace self-intersec
 MESH_REPAIR_PARAMETER(merge_intersecting_solids)  // bool: union of intersecting closed parts
 MESH_REPAIR_PARAMETER(remove_hole_fragments)      // bool: small open pieces in holes removed
 MESH_REPAIR_PARAMETER(bridge_through_holes)       // bool: missing walls of through-holes added
+MESH_REPAIR_PARAMETER(orient_closed_parts)        // bool: closed parts made to bound a volume
 
 // hole benchmark (hole_benchmark.h)
 MESH_REPAIR_PARAMETER(number_of_holes)  // holes punched per mesh

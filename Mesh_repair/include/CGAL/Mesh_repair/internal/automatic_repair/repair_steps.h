@@ -6,6 +6,7 @@
 // The steps of automatic_repair, one function each, in the order of thesis Figure 3.2.
 
 #include <CGAL/Mesh_repair/fill_holes.h>
+#include <CGAL/Mesh_repair/internal/automatic_repair/closed_part_orientation.h>
 #include <CGAL/Mesh_repair/internal/automatic_repair/region_replacement.h>
 #include <CGAL/Mesh_repair/internal/automatic_repair/self_union.h>
 #include <CGAL/Mesh_repair/internal/automatic_repair/spike_relaxation.h>
@@ -65,6 +66,7 @@ struct Repair_options {
   bool merge_intersecting_solids = false;
   bool remove_hole_fragments = true;
   bool bridge_through_holes = true;
+  bool orient_closed_parts = true;
   Fill_options fill;
 };
 
@@ -550,6 +552,27 @@ void step_bridge_through_holes(PolygonMesh& pm, VertexPointMap vpm, const GeomTr
   timer.count("tubes_added", double(report.bridged));
   timer.count("tubes_rejected", double(report.rejected));
   timer.count("faces_added", double(report.faces_added));
+}
+
+/// Step 11c: closed parts that face inward are turned outward, with the parts inside them
+/// (internal/automatic_repair/closed_part_orientation.h).
+template <class PolygonMesh, class VertexPointMap, class GeomTraits>
+void step_orient_closed_parts(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
+                              Any_visitor visitor, Repair_result& result) {
+  Step_timer timer(result, "orientation of closed parts", visitor);
+  const Closed_part_orientation oriented = orient_closed_parts(pm, vpm, traits);
+  result.closed_parts_reversed_outward = oriented.reversed_outward;
+  result.closed_parts_reversed_with_container = oriented.reversed_with_container;
+  timer.count("closed_parts", double(oriented.closed_parts));
+  timer.count("reversed_outward", double(oriented.reversed_outward));
+  timer.count("nested_parts", double(oriented.nested));
+  timer.count("reversed_with_container", double(oriented.reversed_with_container));
+  timer.count("crossing_parts", double(oriented.crossing_parts));
+  if (oriented.budget_reached)
+    timer.step().notes.push_back("the nesting tests reached their budget (" +
+                                 std::to_string(nesting_tests_per_face) +
+                                 " vertex tests per face); the parts not tested count as not "
+                                 "nested");
 }
 
 template <class PolygonMesh>
@@ -1622,6 +1645,8 @@ Repair_result run_repair_pipeline(
     step_remove_self_intersections(pm, vpm, traits, options, visitor, result);
   if (!result.cancelled && options.merge_intersecting_solids)
     step_merge_intersecting_solids(pm, vpm, traits, visitor, result);
+  if (!result.cancelled && options.orient_closed_parts)
+    step_orient_closed_parts(pm, vpm, traits, visitor, result);
   step_verify(pm, vpm, hole_points, options, result, visitor);
   list_remaining(result);
   return result;
