@@ -428,13 +428,19 @@ TEST(ReadWrite, ZeroVolumeWallsAreRemovedWholeOnlyWhenAsked) {
   EXPECT_EQ(num_faces(walls_removed), 20u);
 }
 
-/// Two boxes of n x n x n unit cells, side by side along x, each written whole as quads of one
-/// cell (their common face twice, once per box).
-std::string boxes_sharing_a_face_off(int n) {
+/// Quads on integer points, written as OFF.
+struct Quad_soup {
   std::map<std::array<int, 3>, std::size_t> index;
   std::vector<std::array<std::size_t, 4>> quads;
-  auto at = [&](std::array<int, 3> p) { return index.emplace(p, index.size()).first->second; };
-  for (int box = 0; box < 2; ++box)
+
+  std::size_t at(const std::array<int, 3>& p) {
+    return index.emplace(p, index.size()).first->second;
+  }
+  void add(const std::array<std::array<int, 3>, 4>& q) {
+    quads.push_back({at(q[0]), at(q[1]), at(q[2]), at(q[3])});
+  }
+  /// The surface of a box of n x n x n unit cells from (x0, 0, 0), facing outward.
+  void add_box(int n, int x0) {
     for (int axis = 0; axis < 3; ++axis)
       for (int side = 0; side < 2; ++side)
         for (int i = 0; i < n; ++i)
@@ -445,30 +451,36 @@ std::string boxes_sharing_a_face_off(int n) {
               p[axis] = side * n;
               p[u] = a;
               p[w] = b;
-              p[0] += box * n;
-              return at(p);
+              p[0] += x0;
+              return p;
             };
-            std::array<std::size_t, 4> q{corner(i, j), corner(i + 1, j), corner(i + 1, j + 1),
-                                         corner(i, j + 1)};
+            std::array<std::array<int, 3>, 4> q{corner(i, j), corner(i + 1, j),
+                                                corner(i + 1, j + 1), corner(i, j + 1)};
             if (side == 0) std::swap(q[1], q[3]);
-            quads.push_back(q);
+            add(q);
           }
-  std::vector<std::array<int, 3>> points(index.size());
-  for (const auto& entry : index) points[entry.second] = entry.first;
-  std::ostringstream off;
-  off << "OFF\n" << points.size() << ' ' << quads.size() << " 0\n";
-  for (const auto& p : points) off << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
-  for (const auto& q : quads)
-    off << "4 " << q[0] << ' ' << q[1] << ' ' << q[2] << ' ' << q[3] << '\n';
-  return off.str();
-}
+  }
+  std::string off() const {
+    std::vector<std::array<int, 3>> points(index.size());
+    for (const auto& entry : index) points[entry.second] = entry.first;
+    std::ostringstream out;
+    out << "OFF\n" << points.size() << ' ' << quads.size() << " 0\n";
+    for (const auto& p : points) out << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+    for (const auto& q : quads)
+      out << "4 " << q[0] << ' ' << q[1] << ' ' << q[2] << ' ' << q[3] << '\n';
+    return out.str();
+  }
+};
 
 // A wall of many polygons goes whole: inside it, keeping one copy of a polygon or none leaves two
 // polygons per edge either way, and the inner polygons go with the outline's. Kept, they would
 // make a sheet inside the joined box, with a border and an edge of three faces around it.
 TEST(ReadWrite, AZeroVolumeWallOfManyPolygonsIsRemovedWhole) {
   const fs::path path = scratch("boxes_sharing_a_face.off");
-  write_text(path, boxes_sharing_a_face_off(3));
+  Quad_soup soup;
+  soup.add_box(3, 0);
+  soup.add_box(3, 3);  // each box written whole: their common face twice
+  write_text(path, soup.off());
   Mesh mesh;
   MR::Soup_repair_report report;
   MR::Read_options options;
@@ -480,6 +492,29 @@ TEST(ReadWrite, AZeroVolumeWallOfManyPolygonsIsRemovedWhole) {
   EXPECT_TRUE(CGAL::is_closed(mesh));
   EXPECT_EQ(num_faces(mesh), 2u * (2 * 6 * 9 - 2 * 9));  // the quads of the outside, halved
   EXPECT_EQ(num_vertices(mesh), std::size_t(7 * 4 * 4 - 5 * 2 * 2));  // the outside points
+}
+
+// A sheet given twice (a fin on a box, each quad written twice the same way) is no wall: along
+// the box, the copies meet two faces of the box, and those quads go as before; the others, whose
+// edges are borders or meet the sheet's own quads, keep one copy (OpenFOAM's motorbike lost
+// 67,000 of its polygons when they went with the first ones).
+TEST(ReadWrite, ASheetGivenTwiceThatMeetsAPartIsNoWall) {
+  const fs::path path = scratch("box_with_a_doubled_fin.off");
+  Quad_soup soup;
+  soup.add_box(3, 0);
+  for (int copy = 0; copy < 2; ++copy)
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)  // on the plane z = 3, from the box's edge x = 3 outward
+        soup.add({{{3 + i, j, 3}, {4 + i, j, 3}, {4 + i, j + 1, 3}, {3 + i, j + 1, 3}}});
+  write_text(path, soup.off());
+  Mesh mesh;
+  MR::Soup_repair_report report;
+  MR::Read_options options;
+  options.remove_zero_volume_walls = true;
+  ASSERT_EQ(MR::read_mesh(path.string(), mesh, report, options), "");
+  EXPECT_EQ(report.zero_volume_walls_removed, 3u);
+  EXPECT_EQ(report.duplicated_polygons_removed, 3u * 2 + 6u);
+  EXPECT_EQ(num_faces(mesh), 2u * (6 * 9 + 6));  // the box and one copy of six fin quads
 }
 
 // A surface given twice (once per orientation) keeps one copy: removing both would leave

@@ -454,7 +454,8 @@ inline void sort_out_kept(Repair_result& result, const Repair_options& options) 
   result.remaining = std::move(remaining);
 }
 
-/// `run_repair_pipeline`, then the coincident-elements step and the final lists.
+/// `run_repair_pipeline`, then the coincident-elements step, the orientation of closed parts and
+/// the final lists.
 template <class PolygonMesh, class VertexPointMap, class GeomTraits>
 Repair_result run_automatic_repair(PolygonMesh& pm, VertexPointMap vpm, const GeomTraits& traits,
                                    const Repair_options& options, Any_visitor visitor) {
@@ -468,6 +469,8 @@ Repair_result run_automatic_repair(PolygonMesh& pm, VertexPointMap vpm, const Ge
 #endif
   if (!result.cancelled)
     step_coincident_elements(pm, vpm, traits, options, hole_points, result, visitor);
+  if (!result.cancelled && options.orient_closed_parts)
+    step_orient_closed_parts(pm, vpm, traits, visitor, result);
   result.remaining.clear();
   list_remaining(result);
   sort_out_kept(result, options);
