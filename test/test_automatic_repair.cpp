@@ -1672,3 +1672,20 @@ TEST(AutomaticRepair, ASolidInsideASolidKeepsFacingOutward) {
   EXPECT_EQ(result.closed_parts_reversed_with_container, 0u);
   EXPECT_NEAR(PMP::volume(mesh), volumes, 1e-9 * volumes);
 }
+
+// 100 concentric spheres 1% apart: every face's box meets faces of its neighbours, and the
+// count of intersecting pairs stops at its limit of candidate pairs with none found. That proves
+// nothing about the faces it did not reach: the output is not called complete.
+TEST(AutomaticRepair, AnOutputWhoseSelfIntersectionCountStoppedIsNotComplete) {
+  Mesh mesh;
+  for (int k = 0; k < 100; ++k) MR::make_sphere(mesh, Point(0, 0, 0), 1.0 + 0.01 * k, 2);
+  ASSERT_EQ(num_faces(mesh), 100u * 320u);
+  const MR::Repair_result result = MR::automatic_repair(mesh, MR::parameters::number_of_threads(1));
+  EXPECT_TRUE(result.self_intersections_output_truncated);
+  EXPECT_TRUE(result.closed);
+  EXPECT_EQ(result.status(), MR::Repair_status::incomplete);
+  ASSERT_EQ(result.remaining.size(), 1u);
+  EXPECT_NE(result.remaining[0].find("stopped at its limit"), std::string::npos)
+      << result.remaining[0];
+  EXPECT_EQ(step_count(result, "orientation of closed parts", "closed_parts"), 100.0);
+}
